@@ -1,0 +1,251 @@
+//! Parameter intervals, rectangles and partitions, validated once on construction.
+
+use crate::error::{finite, Error, Result};
+
+/// A closed interval `[start, end]` with finite bounds and `start < end`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Interval {
+    start: f64,
+    end: f64,
+}
+
+impl Interval {
+    /// The interval `[start, end]`.
+    ///
+    /// # Panics
+    /// If a bound is not finite or `start >= end`; see [`Interval::try_new`].
+    pub fn new(start: f64, end: f64) -> Self {
+        Self::try_new(start, end).expect("invalid interval")
+    }
+
+    /// The interval `[start, end]`.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite bound, [`Error::EmptyInterval`] unless
+    /// `start < end`.
+    pub fn try_new(start: f64, end: f64) -> Result<Self> {
+        Self::named("interval", start, end)
+    }
+
+    pub(crate) fn named(what: &'static str, start: f64, end: f64) -> Result<Self> {
+        finite(what, start)?;
+        finite(what, end)?;
+        if start < end {
+            Ok(Self { start, end })
+        } else {
+            Err(Error::EmptyInterval { what, start, end })
+        }
+    }
+
+    /// Left end.
+    pub fn start(&self) -> f64 {
+        self.start
+    }
+
+    /// Right end.
+    pub fn end(&self) -> f64 {
+        self.end
+    }
+
+    /// Width `end − start` (the Δu or Δv of seed 000 §5), always positive.
+    pub fn width(&self) -> f64 {
+        self.end - self.start
+    }
+
+    /// Local parameter `(x − start) / width` of a global one (seed 000 §5, "parametri locali").
+    pub fn to_local(&self, x: f64) -> f64 {
+        (x - self.start) / self.width()
+    }
+
+    /// `n` equally spaced samples from `start` to `end`, both included (MATLAB `linspace`).
+    ///
+    /// # Errors
+    /// [`Error::TooFewSamples`] if `n < 2`.
+    pub fn linspace(&self, n: usize) -> Result<Vec<f64>> {
+        crate::error::samples("samples", n)?;
+        Ok(linspace(self.start, self.end, n))
+    }
+
+    /// Whether `x` lies in the closed interval.
+    pub fn contains(&self, x: f64) -> bool {
+        self.start <= x && x <= self.end
+    }
+}
+
+/// MATLAB's `linspace(a, b, n)` for `n ≥ 2`: `a + k (b − a)/(n − 1)`, `k = 0 … n−1`, with the
+/// last sample set to `b` exactly, as MATLAB does, so both ends are included bit for bit.
+pub(crate) fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    debug_assert!(n >= 2);
+    let step = (b - a) / (n - 1) as f64;
+    let mut v: Vec<f64> = (0..n).map(|k| a + k as f64 * step).collect();
+    v[n - 1] = b;
+    v
+}
+
+/// A parameter rectangle `[sₐ, s_b] × [tₐ, t_b]` (seed 000 §2: the portion of the surface a
+/// patch interpolates).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rect {
+    /// The s side `[sₐ, s_b]` (the rows of the Hermite matrix).
+    pub s: Interval,
+    /// The t side `[tₐ, t_b]` (the columns of the Hermite matrix).
+    pub t: Interval,
+}
+
+impl Rect {
+    /// The rectangle `[s_a, s_b] × [t_a, t_b]`.
+    ///
+    /// # Panics
+    /// On invalid bounds; see [`Rect::try_new`].
+    pub fn new(s_a: f64, s_b: f64, t_a: f64, t_b: f64) -> Self {
+        Self::try_new(s_a, s_b, t_a, t_b).expect("invalid rectangle")
+    }
+
+    /// The rectangle `[s_a, s_b] × [t_a, t_b]`.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite bound; [`Error::EmptyInterval`] for a side
+    /// of zero or negative width.
+    pub fn try_new(s_a: f64, s_b: f64, t_a: f64, t_b: f64) -> Result<Self> {
+        Ok(Self {
+            s: Interval::named("rectangle side s", s_a, s_b)?,
+            t: Interval::named("rectangle side t", t_a, t_b)?,
+        })
+    }
+
+    /// The unit square `[0, 1]²`, the domain of the report's §3 and §6 experiments.
+    pub fn unit() -> Self {
+        Self::new(0.0, 1.0, 0.0, 1.0)
+    }
+
+    /// The square `[a, b]²`.
+    ///
+    /// # Errors
+    /// As [`Rect::try_new`].
+    pub fn square(a: f64, b: f64) -> Result<Self> {
+        Self::try_new(a, b, a, b)
+    }
+}
+
+/// A partition `u₀ < u₁ < … < uₙ` of an interval into `n ≥ 1` sub-intervals (seed 000 §5).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Partition {
+    nodes: Vec<f64>,
+}
+
+impl Partition {
+    /// A partition from its nodes.
+    ///
+    /// # Panics
+    /// On invalid nodes; see [`Partition::try_new`].
+    pub fn new(nodes: Vec<f64>) -> Self {
+        Self::try_new(nodes).expect("invalid partition")
+    }
+
+    /// A partition from its nodes.
+    ///
+    /// # Errors
+    /// [`Error::PartitionTooShort`] for fewer than 2 nodes, [`Error::NonFinite`] for a NaN or
+    /// infinite node, [`Error::NotIncreasing`] unless the nodes strictly increase.
+    pub fn try_new(nodes: Vec<f64>) -> Result<Self> {
+        const WHAT: &str = "partition";
+        if nodes.len() < 2 {
+            return Err(Error::PartitionTooShort {
+                what: WHAT,
+                got: nodes.len(),
+            });
+        }
+        for &x in &nodes {
+            finite(WHAT, x)?;
+        }
+        if let Some(index) = (1..nodes.len()).find(|&k| nodes[k] <= nodes[k - 1]) {
+            return Err(Error::NotIncreasing {
+                what: WHAT,
+                index,
+                value: nodes[index],
+                prev: nodes[index - 1],
+            });
+        }
+        Ok(Self { nodes })
+    }
+
+    /// `n` equal sub-intervals of `[a, b]`: nodes `linspace(a, b, n + 1)` as in Codice 14.
+    ///
+    /// # Errors
+    /// [`Error::ZeroPatches`] if `n = 0`; the errors of [`Interval::try_new`] for the bounds.
+    pub fn uniform(a: f64, b: f64, n: usize) -> Result<Self> {
+        if n == 0 {
+            return Err(Error::ZeroPatches { what: "partition" });
+        }
+        Interval::named("partition", a, b)?;
+        Ok(Self {
+            nodes: linspace(a, b, n + 1),
+        })
+    }
+
+    /// The nodes `u₀ … uₙ`.
+    pub fn nodes(&self) -> &[f64] {
+        &self.nodes
+    }
+
+    /// Number of sub-intervals `n`.
+    pub fn len(&self) -> usize {
+        self.nodes.len() - 1
+    }
+
+    /// Always false: a valid partition has at least one sub-interval.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The `i`-th sub-interval `[uᵢ, uᵢ₊₁]`.
+    ///
+    /// # Panics
+    /// If `i >= self.len()`.
+    pub fn interval(&self, i: usize) -> Interval {
+        Interval {
+            start: self.nodes[i],
+            end: self.nodes[i + 1],
+        }
+    }
+
+    /// The whole interval `[u₀, uₙ]`.
+    pub fn span(&self) -> Interval {
+        Interval {
+            start: self.nodes[0],
+            end: self.nodes[self.nodes.len() - 1],
+        }
+    }
+
+    /// Index `i` of the sub-interval `[uᵢ, uᵢ₊₁)` holding `x`; the right end `uₙ` belongs to
+    /// the last one, and points outside the span are assigned to the nearest end piece.
+    pub fn locate(&self, x: f64) -> usize {
+        let inner = &self.nodes[1..self.nodes.len() - 1];
+        inner.partition_point(|&node| node <= x)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn linspace_includes_both_ends() {
+        let v = linspace(0.0, 0.7, 8);
+        assert_eq!(v.len(), 8);
+        assert_eq!(v[0], 0.0);
+        assert_eq!(v[7], 0.7, "last sample must be b exactly: {v:?}");
+    }
+
+    #[test]
+    fn locate_assigns_right_end_to_last_piece() {
+        let p = Partition::new(vec![0.0, 0.5, 0.9, 1.0]);
+        assert_eq!(p.locate(0.0), 0);
+        assert_eq!(p.locate(0.49), 0);
+        assert_eq!(p.locate(0.5), 1);
+        assert_eq!(p.locate(0.95), 2);
+        assert_eq!(p.locate(1.0), 2);
+        assert_eq!(p.locate(-3.0), 0);
+        assert_eq!(p.locate(7.0), 2);
+    }
+}

@@ -1,0 +1,74 @@
+//! A dense row-major grid of samples (rows index s, columns index t).
+
+/// A `rows × cols` table of values stored row by row.
+///
+/// Row `i` corresponds to the `i`-th s (or u) sample and column `j` to the `j`-th t (or v)
+/// sample. MATLAB's `meshgrid(u, v)` puts `u` along columns, which is why Codice 14 compares
+/// against `X'`; this type stores that transposed layout directly.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid<T> {
+    rows: usize,
+    cols: usize,
+    data: Vec<T>,
+}
+
+impl<T> Grid<T> {
+    /// Builds the grid from `f(i, j)`.
+    pub fn from_fn(rows: usize, cols: usize, mut f: impl FnMut(usize, usize) -> T) -> Self {
+        let mut data = Vec::with_capacity(rows * cols);
+        for i in 0..rows {
+            for j in 0..cols {
+                data.push(f(i, j));
+            }
+        }
+        Self { rows, cols, data }
+    }
+
+    /// Wraps row-major `data` of length `rows * cols`; `None` if the length differs.
+    pub fn from_vec(rows: usize, cols: usize, data: Vec<T>) -> Option<Self> {
+        (data.len() == rows * cols).then_some(Self { rows, cols, data })
+    }
+
+    /// Number of rows (s samples).
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of columns (t samples).
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// The value at row `i`, column `j`.
+    ///
+    /// # Panics
+    /// If the index is out of range.
+    pub fn get(&self, i: usize, j: usize) -> &T {
+        assert!(i < self.rows && j < self.cols, "grid index out of range");
+        &self.data[i * self.cols + j]
+    }
+
+    /// Row `i` as a slice.
+    pub fn row(&self, i: usize) -> &[T] {
+        &self.data[i * self.cols..(i + 1) * self.cols]
+    }
+
+    /// All values, row-major.
+    pub fn as_slice(&self) -> &[T] {
+        &self.data
+    }
+
+    /// All values, row-major, mutable (the shape stays fixed).
+    pub fn as_mut_slice(&mut self) -> &mut [T] {
+        &mut self.data
+    }
+
+    /// Applies `f` to every value.
+    pub fn map<U>(&self, f: impl FnMut(&T) -> U) -> Grid<U> {
+        Grid {
+            rows: self.rows,
+            cols: self.cols,
+            data: self.data.iter().map(f).collect(),
+        }
+    }
+}

@@ -1,0 +1,5 @@
+//! Bicubic Hermite interpolation of surfaces (seed 000 §1–3, §5–6).
+
+pub mod basis;
+pub mod patch;
+pub mod spline_surface;

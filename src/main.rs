@@ -1,0 +1,97 @@
+//! `splinelab`: regenerate every figure and table of the reports, or run the benchmarks.
+
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+use splinelab::report::{bench, list_outputs, write_all, write_only};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+/// Regenerates the figures and tables of the splinelab reports (default: all, into `out/`).
+#[derive(Parser, Debug)]
+#[command(
+    name = "splinelab",
+    version,
+    about,
+    args_conflicts_with_subcommands = true
+)]
+struct Cli {
+    /// Output folder.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// List output ids with a one-line description, and exit.
+    #[arg(long)]
+    list: bool,
+    /// Regenerate only this output (repeatable).
+    #[arg(long, value_name = "ID")]
+    only: Vec<String>,
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run the speed workloads and print one JSON object per line.
+    Bench {
+        /// Run only this workload (repeatable).
+        #[arg(long, value_name = "ID")]
+        only: Vec<String>,
+        /// Minimum measuring time per workload, in milliseconds.
+        #[arg(long, default_value_t = 500)]
+        millis: u64,
+        /// List the workloads and exit.
+        #[arg(long)]
+        list: bool,
+    },
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("splinelab: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(cli: Cli) -> anyhow::Result<()> {
+    if let Some(Command::Bench { only, millis, list }) = cli.command {
+        if list {
+            for w in &bench::WORKLOADS {
+                println!("{:<20} {}", w.id, w.description);
+            }
+            return Ok(());
+        }
+        let ids: Vec<String> = if only.is_empty() {
+            bench::WORKLOADS.iter().map(|w| w.id.to_string()).collect()
+        } else {
+            only
+        };
+        for id in ids {
+            let r = bench::run(&id, Duration::from_millis(millis))?;
+            println!("{}", r.to_json());
+        }
+        return Ok(());
+    }
+    if cli.list {
+        for o in list_outputs() {
+            println!("{:<20} {}", o.id, o.description);
+        }
+        return Ok(());
+    }
+    let written = if cli.only.is_empty() {
+        write_all(&cli.out)
+    } else {
+        let mut all = Vec::new();
+        for id in &cli.only {
+            all.extend(write_only(&cli.out, id)?);
+        }
+        Ok(all)
+    }
+    .with_context(|| format!("regenerating outputs into {}", cli.out.display()))?;
+    for path in &written {
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}

@@ -1,0 +1,168 @@
+//! Benchmark workloads of the `splinelab bench` subcommand, one JSON line each.
+
+use crate::bezier::patch::BezierPatch;
+use crate::domain::{linspace, Partition, Rect};
+use crate::error::{Error, Result};
+use crate::hermite::patch::HermitePatch;
+use crate::hermite::spline_surface::HermiteSpline;
+use crate::report::printed::T6;
+use crate::study::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
+use crate::surface::{partials_on_grid, Torus};
+use std::f64::consts::TAU;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// One measured workload.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BenchResult {
+    /// Workload id.
+    pub workload: &'static str,
+    /// Points (or nodes) produced by one run.
+    pub points: usize,
+    /// Median wall time of one run, seconds.
+    pub seconds: f64,
+}
+
+impl BenchResult {
+    /// Points per second.
+    pub fn throughput(&self) -> f64 {
+        self.points as f64 / self.seconds
+    }
+
+    /// `{"workload": …, "points": …, "seconds": …, "throughput": …}`.
+    pub fn to_json(&self) -> String {
+        format!(
+            r#"{{"workload": "{}", "points": {}, "seconds": {:e}, "throughput": {:e}}}"#,
+            self.workload,
+            self.points,
+            self.seconds,
+            self.throughput()
+        )
+    }
+}
+
+/// A workload: id, description, and one run returning the number of points it produced.
+pub struct Workload {
+    /// Id for `bench --only`.
+    pub id: &'static str,
+    /// What one run does.
+    pub description: &'static str,
+    run: fn() -> Result<usize>,
+}
+
+fn t6_table() -> Result<usize> {
+    let torus = Torus::default();
+    let mut points = 0;
+    for row in &T6 {
+        let rect = Rect::square(0.0, row.side)?;
+        let e = uniform_spline_errors(
+            &torus,
+            &rect,
+            row.n,
+            row.m,
+            REPORT_PREC,
+            PatchEvaluation::HermiteMatrix,
+        )?;
+        black_box(e);
+        points += row.n * row.m * REPORT_PREC * REPORT_PREC;
+    }
+    Ok(points)
+}
+
+fn report_patch() -> HermitePatch {
+    HermitePatch::from_surface(&Torus::default(), &Rect::unit())
+}
+
+fn patch_matrix() -> Result<usize> {
+    let g = black_box(report_patch()).tabulate(REPORT_PREC, REPORT_PREC)?;
+    Ok(black_box(g).as_slice().len())
+}
+
+fn patch_de_casteljau() -> Result<usize> {
+    let b = BezierPatch::from_hermite(&black_box(report_patch()));
+    let g = b.tabulate_de_casteljau(REPORT_PREC, REPORT_PREC)?;
+    Ok(black_box(g).as_slice().len())
+}
+
+fn corner_data() -> Result<usize> {
+    let nodes = linspace(0.0, TAU, 257);
+    let g = partials_on_grid(&Torus::default(), &nodes, &nodes);
+    Ok(black_box(g).as_slice().len())
+}
+
+thread_local! {
+    static GRID_BUFFER: std::cell::RefCell<Vec<nalgebra::Vector3<f64>>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+fn torus_grid() -> Result<usize> {
+    let spline = HermiteSpline::from_surface(
+        &Torus::default(),
+        Partition::uniform(0.0, TAU, 16)?,
+        Partition::uniform(0.0, TAU, 16)?,
+    );
+    let samples = linspace(0.0, TAU, 1024);
+    GRID_BUFFER.with(|buf| {
+        let mut out = buf.borrow_mut();
+        spline.tabulate_into(&samples, &samples, &mut out)?;
+        Ok(black_box(&*out).len())
+    })
+}
+
+/// Every workload.
+pub const WORKLOADS: [Workload; 5] = [
+    Workload {
+        id: "t6-table",
+        description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
+        run: t6_table,
+    },
+    Workload {
+        id: "patch-matrix",
+        description: "one 15×15 patch tabulation by H(s)ᵀ C H(t)",
+        run: patch_matrix,
+    },
+    Workload {
+        id: "patch-decasteljau",
+        description: "one 15×15 patch tabulation by de Casteljau on the Bézier net",
+        run: patch_de_casteljau,
+    },
+    Workload {
+        id: "corner-data",
+        description: "point, X_s, X_t, X_st of the torus at 257×257 nodes (hyper-dual numbers)",
+        run: corner_data,
+    },
+    Workload {
+        id: "torus-grid",
+        description: "whole torus as 16×16 patches, built and tabulated on 1024×1024 nodes (output buffer reused)",
+        run: torus_grid,
+    },
+];
+
+/// Runs one workload: a warm-up, then repeated runs for at least `budget` (and at least 5),
+/// reporting the median.
+///
+/// # Errors
+/// [`Error::UnknownId`] for an unknown id; errors of the workload.
+pub fn run(id: &str, budget: Duration) -> Result<BenchResult> {
+    let w = WORKLOADS
+        .iter()
+        .find(|w| w.id == id)
+        .ok_or_else(|| Error::UnknownId {
+            what: "workload",
+            id: id.to_string(),
+        })?;
+    let points = (w.run)()?;
+    let mut times = Vec::new();
+    let start = Instant::now();
+    while times.len() < 5 || start.elapsed() < budget {
+        let t = Instant::now();
+        black_box((w.run)()?);
+        times.push(t.elapsed().as_secs_f64());
+    }
+    times.sort_by(f64::total_cmp);
+    Ok(BenchResult {
+        workload: w.id,
+        points,
+        seconds: times[times.len() / 2],
+    })
+}

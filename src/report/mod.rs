@@ -1,0 +1,11 @@
+//! The report layer: tables (polars DataFrames), output files and benchmark workloads.
+//!
+//! It depends on the mathematics; the mathematics never depends on it.
+
+pub mod bench;
+pub mod output;
+pub mod printed;
+pub mod tables;
+
+pub use output::{list_outputs, write_all, write_only, OutputSpec};
+pub use tables::Table;

@@ -1,0 +1,288 @@
+//! Parametric surfaces written once, generic over the number type, with exact partials.
+//!
+//! Seed 000 §2 (Codice 3) obtains `X_s`, `X_t` and `X_st` of the torus with MATLAB's
+//! Symbolic Math Toolbox (`diff`). Here a surface is one formula generic over
+//! [`DualNum`]; evaluated at hyper-dual numbers `s + ε₁`, `t + ε₂` it returns
+//! `X + X_s ε₁ + X_t ε₂ + X_st ε₁ε₂` exactly (to rounding), with no symbolic algebra and no
+//! finite differences.
+
+use crate::domain::{Interval, Rect};
+use crate::error::{Error, Result};
+use crate::grid::Grid;
+use nalgebra::Vector3;
+use num_dual::{DualNum, HyperDual64};
+
+/// A parametric surface `X(s, t) ∈ ℝ³` given by one formula generic over the number type.
+///
+/// Implement [`ParametricSurface::eval`] once; `f64` gives points, [`num_dual::Dual64`] first
+/// derivatives, [`HyperDual64`] the point with `X_s`, `X_t` and the mixed `X_st` (see
+/// [`SurfaceDerivatives`], implemented for every `ParametricSurface`).
+///
+/// # Examples
+/// ```
+/// use splinelab::{ParametricSurface, SurfaceDerivatives, Torus};
+/// let torus = Torus::default();
+/// let d = torus.partials(0.3, 0.7);
+/// // X_st of the x coordinate is sin t sin s (seed 000 §2, Codice 3)
+/// assert!((d.dst.x - 0.7f64.sin() * 0.3f64.sin()).abs() < 1e-15);
+/// ```
+pub trait ParametricSurface {
+    /// `X(s, t)`. Must be written only with operations of [`DualNum`] so that derivatives
+    /// propagate.
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D>;
+}
+
+/// A point and its first partials and mixed second partial, `X, X_s, X_t, X_st`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Partials {
+    /// `X(s, t)`.
+    pub point: Vector3<f64>,
+    /// `∂X/∂s`.
+    pub ds: Vector3<f64>,
+    /// `∂X/∂t`.
+    pub dt: Vector3<f64>,
+    /// `∂²X/∂s∂t`.
+    pub dst: Vector3<f64>,
+}
+
+impl Partials {
+    /// Reads the four parts of a hyper-dual vector `X + X_s ε₁ + X_t ε₂ + X_st ε₁ε₂`.
+    pub fn from_hyperdual(x: &Vector3<HyperDual64>) -> Self {
+        Self {
+            point: x.map(|d| d.re),
+            ds: x.map(|d| d.eps1),
+            dt: x.map(|d| d.eps2),
+            dst: x.map(|d| d.eps1eps2),
+        }
+    }
+}
+
+/// What the Hermite machinery needs of a surface: points and exact partials in `f64`.
+///
+/// Every [`ParametricSurface`] has it (through hyper-dual numbers); [`FnSurface`] gives it
+/// to a user closure written over [`HyperDual64`].
+pub trait SurfaceDerivatives {
+    /// `X(s, t)`.
+    fn point(&self, s: f64, t: f64) -> Vector3<f64>;
+    /// `X, X_s, X_t, X_st` at `(s, t)`.
+    fn partials(&self, s: f64, t: f64) -> Partials;
+}
+
+/// Seeds `s + ε₁` and `t + ε₂` (num-dual's `derivative1`/`derivative2`).
+fn seeded(s: f64, t: f64) -> (HyperDual64, HyperDual64) {
+    (
+        HyperDual64::from_re(s).derivative1(),
+        HyperDual64::from_re(t).derivative2(),
+    )
+}
+
+impl<S: ParametricSurface + ?Sized> SurfaceDerivatives for S {
+    fn point(&self, s: f64, t: f64) -> Vector3<f64> {
+        self.eval(s, t)
+    }
+
+    fn partials(&self, s: f64, t: f64) -> Partials {
+        let (s, t) = seeded(s, t);
+        Partials::from_hyperdual(&self.eval(s, t))
+    }
+}
+
+/// A user surface given as a closure over hyper-dual numbers.
+///
+/// Rust closures cannot be generic, so the closure is written for [`HyperDual64`], the
+/// richest type needed; points are its real part.
+///
+/// # Examples
+/// ```
+/// use nalgebra::Vector3;
+/// use num_dual::{DualNum, HyperDual64};
+/// use splinelab::{FnSurface, SurfaceDerivatives};
+/// let saddle = FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s, t, s * t));
+/// assert_eq!(saddle.partials(2.0, 3.0).dst.z, 1.0);
+/// ```
+pub struct FnSurface<F> {
+    f: F,
+}
+
+impl<F> FnSurface<F>
+where
+    F: Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64>,
+{
+    /// Wraps the closure `f(s, t)`.
+    pub fn new(f: F) -> Self {
+        Self { f }
+    }
+}
+
+impl<F> SurfaceDerivatives for FnSurface<F>
+where
+    F: Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64>,
+{
+    fn point(&self, s: f64, t: f64) -> Vector3<f64> {
+        (self.f)(HyperDual64::from_re(s), HyperDual64::from_re(t)).map(|d| d.re)
+    }
+
+    fn partials(&self, s: f64, t: f64) -> Partials {
+        let (s, t) = seeded(s, t);
+        Partials::from_hyperdual(&(self.f)(s, t))
+    }
+}
+
+fn positive(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive { what, value })
+    }
+}
+
+/// The torus of seed 000 §2 (Codice 1):
+/// `x = (R + r cos t) cos s`, `y = (R + r cos t) sin s`, `z = r sin t`, with `R = 2`, `r = 1`
+/// by default.
+///
+/// Closed-form partials (used by the tests): `X_s = (−(R + r cos t) sin s, (R + r cos t) cos s, 0)`,
+/// `X_t = (−r sin t cos s, −r sin t sin s, r cos t)`, `X_st = (r sin t sin s, −r sin t cos s, 0)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Torus {
+    major: f64,
+    minor: f64,
+}
+
+impl Default for Torus {
+    /// The report's torus, `R = 2`, `r = 1`.
+    fn default() -> Self {
+        Self {
+            major: 2.0,
+            minor: 1.0,
+        }
+    }
+}
+
+impl Torus {
+    /// A torus with major radius `major` (`R`) and minor radius `minor` (`r`).
+    ///
+    /// # Panics
+    /// On a non-positive or non-finite radius; see [`Torus::try_new`].
+    pub fn new(major: f64, minor: f64) -> Self {
+        Self::try_new(major, minor).expect("invalid torus radii")
+    }
+
+    /// A torus with major radius `major` (`R`) and minor radius `minor` (`r`).
+    ///
+    /// # Errors
+    /// [`Error::NotPositive`] unless both radii are positive and finite.
+    pub fn try_new(major: f64, minor: f64) -> Result<Self> {
+        Ok(Self {
+            major: positive("torus major radius", major)?,
+            minor: positive("torus minor radius", minor)?,
+        })
+    }
+
+    /// Major radius `R`.
+    pub fn major(&self) -> f64 {
+        self.major
+    }
+
+    /// Minor radius `r`.
+    pub fn minor(&self) -> f64 {
+        self.minor
+    }
+}
+
+impl ParametricSurface for Torus {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        let (sin_s, cos_s) = s.sin_cos();
+        let (sin_t, cos_t) = t.sin_cos();
+        let ring = cos_t * self.minor + self.major;
+        Vector3::new(ring * cos_s, ring * sin_s, sin_t * self.minor)
+    }
+}
+
+/// A sphere of radius `ρ` in longitude `s` and latitude `t`:
+/// `X = ρ (cos t cos s, cos t sin s, sin t)`; `X_st = ρ (sin t sin s, −sin t cos s, 0)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sphere {
+    radius: f64,
+}
+
+impl Default for Sphere {
+    /// The unit sphere.
+    fn default() -> Self {
+        Self { radius: 1.0 }
+    }
+}
+
+impl Sphere {
+    /// A sphere of radius `radius`.
+    ///
+    /// # Errors
+    /// [`Error::NotPositive`] unless the radius is positive and finite.
+    pub fn try_new(radius: f64) -> Result<Self> {
+        Ok(Self {
+            radius: positive("sphere radius", radius)?,
+        })
+    }
+
+    /// Radius `ρ`.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+}
+
+impl ParametricSurface for Sphere {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        let (sin_s, cos_s) = s.sin_cos();
+        let (sin_t, cos_t) = t.sin_cos();
+        Vector3::new(cos_t * cos_s, cos_t * sin_s, sin_t) * D::from(self.radius)
+    }
+}
+
+/// A test surface whose mixed partial is non-zero everywhere in every coordinate:
+/// `X = (e^{s+t}, e^{s−t}, sinh s sinh t)`, so `X_st = (e^{s+t}, −e^{s−t}, cosh s cosh t)`.
+///
+/// On the torus `X_st` vanishes wherever `sin t = 0`, which hides mistakes in the twist
+/// entries of the Hermite and Bézier matrices (see the README's finding on Codice 7); this
+/// surface hides none.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ExpSurface;
+
+impl ParametricSurface for ExpSurface {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        Vector3::new((s + t).exp(), (s - t).exp(), s.sinh() * t.sinh())
+    }
+}
+
+/// Tabulates `X` on the `ns × nt` grid `linspace(sₐ, s_b, ns) × linspace(tₐ, t_b, nt)`;
+/// row `i` is `sᵢ`, column `j` is `tⱼ` (the layout of `X'` in Codice 14).
+///
+/// # Errors
+/// [`Error::TooFewSamples`] if `ns < 2` or `nt < 2`.
+pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
+    surface: &S,
+    rect: &Rect,
+    ns: usize,
+    nt: usize,
+) -> Result<Grid<Vector3<f64>>> {
+    let s = rect.s.linspace(ns)?;
+    let t = rect.t.linspace(nt)?;
+    Ok(Grid::from_fn(ns, nt, |i, j| surface.point(s[i], t[j])))
+}
+
+/// `X, X_s, X_t, X_st` at every node of `s_nodes × t_nodes` (row `i` is `s_nodes[i]`).
+pub fn partials_on_grid<S: SurfaceDerivatives + ?Sized>(
+    surface: &S,
+    s_nodes: &[f64],
+    t_nodes: &[f64],
+) -> Grid<Partials> {
+    Grid::from_fn(s_nodes.len(), t_nodes.len(), |i, j| {
+        surface.partials(s_nodes[i], t_nodes[j])
+    })
+}
+
+/// Samples of an interval, for callers that have bounds but no [`Interval`] yet.
+///
+/// # Errors
+/// As [`Interval::try_new`] and [`Interval::linspace`].
+pub fn linspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>> {
+    Interval::try_new(a, b)?.linspace(n)
+}

@@ -1,0 +1,140 @@
+//! The report's numbers reproduced, the cause of the disagreement shown, and the order of
+//! convergence observed.
+
+// Index loops over k ∈ {x, y, z} read printed, listing and our values side by side.
+#![allow(clippy::needless_range_loop)]
+use splinelab::report::printed::{agrees_to_printed, T3, T6};
+use splinelab::report::tables;
+use splinelab::study::REPORT_PREC;
+use splinelab::{convergence, uniform_spline_errors, PatchEvaluation, Rect, Torus};
+
+fn errors(side: f64, n: usize, m: usize, eval: PatchEvaluation) -> [f64; 3] {
+    let rect = Rect::square(0.0, side).expect("valid");
+    let e =
+        uniform_spline_errors(&Torus::default(), &rect, n, m, REPORT_PREC, eval).expect("valid");
+    [e.report_norm.x, e.report_norm.y, e.report_norm.z]
+}
+
+#[test]
+fn t3_is_reproduced_to_every_printed_digit() {
+    for row in &T3 {
+        for eval in PatchEvaluation::ALL {
+            let ours = errors(row.side, 1, 1, eval);
+            for k in 0..3 {
+                assert!(
+                    agrees_to_printed(row.values[k], ours[k]),
+                    "T3 [0,{}]² coord {k} by {eval:?}: printed {}, ours {}",
+                    row.side,
+                    row.values[k],
+                    ours[k]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_reports_listing_reproduces_every_t6_value() {
+    for row in &T6 {
+        let lit = errors(row.side, row.n, row.m, PatchEvaluation::ReportListing);
+        for k in 0..3 {
+            assert!(
+                agrees_to_printed(row.values[k], lit[k]),
+                "T6 {}×{} coord {k}: printed {}, report's listing {}",
+                row.n,
+                row.m,
+                row.values[k],
+                lit[k]
+            );
+        }
+    }
+}
+
+#[test]
+fn the_correct_method_differs_exactly_where_codice7_is_wrong() {
+    // Rows with m = 1 have tₐ = 0 on every patch, where X_st = 0: correct = printed.
+    // z has X_st = 0 everywhere: correct = printed. x, y with m > 1: the sign error shows.
+    for row in &T6 {
+        let ours = errors(row.side, row.n, row.m, PatchEvaluation::HermiteMatrix);
+        let dc = errors(row.side, row.n, row.m, PatchEvaluation::DeCasteljau);
+        for k in 0..3 {
+            let expect_agree = row.m == 1 || k == 2;
+            assert_eq!(
+                agrees_to_printed(row.values[k], ours[k]),
+                expect_agree,
+                "T6 {}×{} coord {k}: printed {}, ours {}",
+                row.n,
+                row.m,
+                row.values[k],
+                ours[k]
+            );
+            assert!(
+                (ours[k] - dc[k]).abs() <= 1e-13,
+                "matrix form {} vs de Casteljau {}",
+                ours[k],
+                dc[k]
+            );
+            if !expect_agree {
+                let printed: f64 = row.values[k].parse().expect("number");
+                assert!(
+                    ours[k] < printed / 2.0,
+                    "correct error {} should be well below {printed}",
+                    ours[k]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn max_abs_error_converges_with_order_four() {
+    let ns = [1, 2, 4, 8, 16, 32, 64];
+    let rows = convergence(&Torus::default(), &Rect::unit(), &ns, REPORT_PREC).expect("valid");
+    // From n = 4 on the observed order is asymptotic (n = 1 → 2 is still pre-asymptotic,
+    // about 3.4–3.8 per coordinate).
+    for row in rows.iter().filter(|r| r.n >= 4) {
+        let o = row.order.expect("not the first row");
+        for k in 0..3 {
+            assert!(
+                (3.8..=4.2).contains(&o.max_abs[k]),
+                "order of max-abs at n = {}, coord {k}: {}",
+                row.n,
+                o.max_abs[k]
+            );
+            assert!(
+                (3.8..=4.2).contains(&o.rms[k]),
+                "rms order at n = {}: {}",
+                row.n,
+                o.rms[k]
+            );
+        }
+    }
+    // the error really goes down by ~16 per halving
+    assert!(
+        rows[6].errors.max_abs.x < 1e-9,
+        "{:?}",
+        rows[6].errors.max_abs
+    );
+}
+
+#[test]
+fn tables_build_with_expected_shapes() {
+    let t3 = tables::t3().expect("t3");
+    assert_eq!(t3.df.shape(), (6, 13));
+    let t6 = tables::t6().expect("t6");
+    assert_eq!(t6.df.height(), 12);
+    let eq = tables::equivalence().expect("equivalence");
+    assert_eq!(eq.df.height(), 6);
+    let conv = tables::convergence_table().expect("convergence");
+    assert_eq!(conv.df.height(), 21);
+}
+
+#[test]
+fn printed_precision_is_respected() {
+    assert!(agrees_to_printed("0.0717", 0.07174443));
+    assert!(!agrees_to_printed("0.0717", 0.07176));
+    assert!(agrees_to_printed("6.9577e-04", 6.95774e-4));
+    assert!(!agrees_to_printed("6.9577e-04", 6.9580e-4));
+    assert!(!agrees_to_printed("not a number", 1.0));
+    assert!(!agrees_to_printed("0.0717", f64::NAN));
+}
