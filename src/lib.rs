@@ -38,6 +38,6 @@ pub use hermite::spline_surface::HermiteSpline;
 pub use metrics::{compare, matlab_norm, CoordErrors};
 pub use study::{convergence, spline_errors, uniform_spline_errors, PatchEvaluation};
 pub use surface::{
-    partials_on_grid, tabulate, ExpSurface, FnSurface, ParametricSurface, Partials, Sphere,
-    SurfaceDerivatives, Torus,
+    partials_on_grid, partials_on_grid_into, tabulate, ExpSurface, FnSurface, ParametricSurface,
+    Partials, Sphere, SurfaceDerivatives, Torus,
 };

@@ -52,7 +52,7 @@ impl PatchEvaluation {
 ///
 /// # Errors
 /// [`Error::TooFewSamples`] if `prec < 2`.
-pub fn spline_errors<S: SurfaceDerivatives + ?Sized>(
+pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     u: Partition,
     v: Partition,
@@ -85,7 +85,7 @@ pub fn spline_errors<S: SurfaceDerivatives + ?Sized>(
 ///
 /// # Errors
 /// [`Error::ZeroPatches`] if `n` or `m` is 0; [`Error::TooFewSamples`] if `prec < 2`.
-pub fn uniform_spline_errors<S: SurfaceDerivatives + ?Sized>(
+pub fn uniform_spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     rect: &Rect,
     n: usize,
@@ -119,7 +119,7 @@ pub struct ConvergenceRow {
 /// # Errors
 /// [`Error::ZeroPatches`] for `n = 0`, [`Error::NotIncreasing`] unless `ns` increases,
 /// [`Error::TooFewSamples`] if `prec < 2`.
-pub fn convergence<S: SurfaceDerivatives + ?Sized>(
+pub fn convergence<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     rect: &Rect,
     ns: &[usize],

@@ -215,6 +215,14 @@ impl Default for Sphere {
 impl Sphere {
     /// A sphere of radius `radius`.
     ///
+    /// # Panics
+    /// On a non-positive or non-finite radius; see [`Sphere::try_new`].
+    pub fn new(radius: f64) -> Self {
+        Self::try_new(radius).expect("invalid sphere radius")
+    }
+
+    /// A sphere of radius `radius`.
+    ///
     /// # Errors
     /// [`Error::NotPositive`] unless the radius is positive and finite.
     pub fn try_new(radius: f64) -> Result<Self> {
@@ -269,14 +277,62 @@ pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
 }
 
 /// `X, X_s, X_t, X_st` at every node of `s_nodes × t_nodes` (row `i` is `s_nodes[i]`).
-pub fn partials_on_grid<S: SurfaceDerivatives + ?Sized>(
+///
+/// Large grids are split into blocks of rows evaluated on all available cores.
+pub fn partials_on_grid<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     s_nodes: &[f64],
     t_nodes: &[f64],
 ) -> Grid<Partials> {
-    Grid::from_fn(s_nodes.len(), t_nodes.len(), |i, j| {
-        surface.partials(s_nodes[i], t_nodes[j])
-    })
+    let mut out = Vec::new();
+    partials_on_grid_into(surface, s_nodes, t_nodes, &mut out);
+    Grid::from_vec(s_nodes.len(), t_nodes.len(), out).expect("filled rows × cols")
+}
+
+/// Below this many nodes a grid is evaluated on the calling thread only.
+const PARALLEL_MIN_NODES: usize = 16_384;
+
+/// As [`partials_on_grid`], writing row-major into `out` (resized) so a caller that
+/// evaluates repeatedly reuses one buffer.
+pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
+    surface: &S,
+    s_nodes: &[f64],
+    t_nodes: &[f64],
+    out: &mut Vec<Partials>,
+) {
+    let zero = Partials {
+        point: Vector3::zeros(),
+        ds: Vector3::zeros(),
+        dt: Vector3::zeros(),
+        dst: Vector3::zeros(),
+    };
+    let cols = t_nodes.len();
+    out.clear();
+    out.resize(s_nodes.len() * cols, zero);
+    if cols == 0 {
+        return;
+    }
+    let fill = |rows: &[f64], block: &mut [Partials]| {
+        for (&s, row) in rows.iter().zip(block.chunks_mut(cols)) {
+            for (&t, p) in t_nodes.iter().zip(row) {
+                *p = surface.partials(s, t);
+            }
+        }
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if threads == 1 || out.len() < PARALLEL_MIN_NODES {
+        fill(s_nodes, out);
+        return;
+    }
+    let rows_per = s_nodes.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        for (rows, block) in s_nodes
+            .chunks(rows_per)
+            .zip(out.chunks_mut(rows_per * cols))
+        {
+            scope.spawn(move || fill(rows, block));
+        }
+    });
 }
 
 /// Samples of an interval, for callers that have bounds but no [`Interval`] yet.

@@ -36,7 +36,7 @@ pub struct HermiteSpline {
 impl HermiteSpline {
     /// Interpolates `surface` on the partitions `u` (s direction) and `v` (t direction).
     /// The partials are computed once per node and shared by the patches that meet there.
-    pub fn from_surface<S: SurfaceDerivatives + ?Sized>(
+    pub fn from_surface<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         u: Partition,
         v: Partition,
@@ -75,7 +75,7 @@ impl HermiteSpline {
     ///
     /// # Errors
     /// [`Error::ZeroPatches`] if `n` or `m` is 0.
-    pub fn uniform<S: SurfaceDerivatives + ?Sized>(
+    pub fn uniform<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         rect: &Rect,
         n: usize,

@@ -128,7 +128,7 @@ pub const WORKLOADS: [Workload; 5] = [
     },
     Workload {
         id: "corner-data",
-        description: "point, X_s, X_t, X_st of the torus at 257×257 nodes (hyper-dual numbers)",
+        description: "point, X_s, X_t, X_st of the torus at 257×257 nodes (hyper-dual numbers, all cores)",
         run: corner_data,
     },
     Workload {
