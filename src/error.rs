@@ -119,6 +119,14 @@ pub enum Error {
         /// The id asked for.
         id: String,
     },
+    /// A figure could not be drawn.
+    #[error("figure {id}: {message}")]
+    Figure {
+        /// The figure id.
+        id: String,
+        /// What went wrong.
+        message: String,
+    },
     /// A table could not be built (polars error, stringified).
     #[error("table {id}: {message}")]
     Table {

@@ -76,7 +76,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
     }
     if cli.list {
         for o in list_outputs() {
-            println!("{:<20} {}", o.id, o.description);
+            println!("{:<24} {}", o.id(), o.description());
         }
         return Ok(());
     }

@@ -89,3 +89,24 @@ fn bench_prints_json_lines() {
         assert!(line.contains(key), "{line}");
     }
 }
+
+#[test]
+fn only_draws_one_figure() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = splinelab()
+        .args(["--only", "fig2-torus", "--out"])
+        .arg(dir.path())
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let names: Vec<String> = std::fs::read_dir(dir.path().join("figures"))
+        .expect("figures folder")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    assert!(names.contains(&"fig2-torus.png".to_string()), "{names:?}");
+}

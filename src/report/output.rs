@@ -1,15 +1,19 @@
-//! The registry of outputs and their files: `<dir>/tables/<id>.csv` and `.md`.
+//! The registry of outputs and their files: `<dir>/tables/<id>.csv` and `.md`,
+//! `<dir>/figures/<id>.png` and `.svg`.
 
 use crate::error::{Error, Result};
+use crate::report::figures::FigureId;
+use crate::report::style::FIGURE_SIZE;
 use crate::report::tables::{self, Table};
+use plotters::prelude::{BitMapBackend, IntoDrawingArea, SVGBackend};
 use polars::prelude::{AnyValue, CsvWriter, SerWriter};
 use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-/// One output the CLI can regenerate.
+/// One table the CLI can regenerate.
 #[derive(Debug, Clone, Copy)]
-pub struct OutputSpec {
+pub struct TableSpec {
     /// Id used by `--only` and as the file stem.
     pub id: &'static str,
     /// One-line description for `--list`.
@@ -17,7 +21,7 @@ pub struct OutputSpec {
     build: fn() -> Result<Table>,
 }
 
-impl OutputSpec {
+impl TableSpec {
     /// Computes the table.
     ///
     /// # Errors
@@ -27,32 +31,75 @@ impl OutputSpec {
     }
 }
 
-const OUTPUTS: [OutputSpec; 4] = [
-    OutputSpec {
+/// One output: a table or a figure.
+#[derive(Debug, Clone, Copy)]
+pub enum OutputSpec {
+    /// A table (CSV and Markdown).
+    Table(TableSpec),
+    /// A figure (PNG and SVG).
+    Figure(FigureId),
+}
+
+impl OutputSpec {
+    /// Id used by `--only` and as the file stem.
+    pub fn id(&self) -> &'static str {
+        match self {
+            OutputSpec::Table(t) => t.id,
+            OutputSpec::Figure(f) => f.id(),
+        }
+    }
+
+    /// One-line description.
+    pub fn description(&self) -> &'static str {
+        match self {
+            OutputSpec::Table(t) => t.description,
+            OutputSpec::Figure(f) => f.description(),
+        }
+    }
+
+    /// Writes the output's files into `dir`; returns their paths.
+    ///
+    /// # Errors
+    /// [`Error::Io`] if a file cannot be written; errors of the computation or drawing.
+    pub fn write(&self, dir: &Path) -> Result<Vec<PathBuf>> {
+        match self {
+            OutputSpec::Table(t) => write_table(&t.build()?, dir),
+            OutputSpec::Figure(f) => write_figure(*f, dir),
+        }
+    }
+}
+
+const TABLES: [TableSpec; 4] = [
+    TableSpec {
         id: "t3-error",
         description: "Table T3: error of one Hermite patch of the torus on [0,1]² and [0,0.5]² (seed 000 §3), printed vs ours",
         build: tables::t3,
     },
-    OutputSpec {
+    TableSpec {
         id: "t4-equivalence",
         description: "Hermite ≡ Bézier check (Codice 10) for the correct net and Codice 7 as printed",
         build: tables::equivalence,
     },
-    OutputSpec {
+    TableSpec {
         id: "t6-spline-error",
         description: "Table T6: error of n×m Hermite spline patches of the torus (seed 000 §6), printed vs report's listing vs ours",
         build: tables::t6,
     },
-    OutputSpec {
+    TableSpec {
         id: "convergence",
         description: "Convergence study n = m = 1…64 with max-abs, RMS, the report's measure and observed orders",
         build: tables::convergence_table,
     },
 ];
 
-/// Every output, in generation order.
-pub fn list_outputs() -> &'static [OutputSpec] {
-    &OUTPUTS
+/// Every output, in generation order: tables, then figures.
+pub fn list_outputs() -> Vec<OutputSpec> {
+    TABLES
+        .iter()
+        .copied()
+        .map(OutputSpec::Table)
+        .chain(FigureId::ALL.into_iter().map(OutputSpec::Figure))
+        .collect()
 }
 
 fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
@@ -139,29 +186,56 @@ pub fn write_table(table: &Table, dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(vec![csv_path, md_path])
 }
 
+/// Draws `figure` into `<dir>/figures/<id>.png` and `.svg` ([`FIGURE_SIZE`] pixels).
+///
+/// # Errors
+/// [`Error::Io`] if the folder cannot be created; [`Error::Figure`] if drawing or encoding
+/// fails.
+pub fn write_figure(figure: FigureId, dir: &Path) -> Result<Vec<PathBuf>> {
+    let folder = dir.join("figures");
+    fs::create_dir_all(&folder).map_err(io_err(&folder))?;
+    let fail = |e: &dyn std::fmt::Display| Error::Figure {
+        id: figure.id().to_string(),
+        message: e.to_string(),
+    };
+    let png = folder.join(format!("{}.png", figure.id()));
+    {
+        let root = BitMapBackend::new(&png, FIGURE_SIZE).into_drawing_area();
+        figure.render(&root)?;
+        root.present().map_err(|e| fail(&e))?;
+    }
+    let svg = folder.join(format!("{}.svg", figure.id()));
+    {
+        let root = SVGBackend::new(&svg, FIGURE_SIZE).into_drawing_area();
+        figure.render(&root)?;
+        root.present().map_err(|e| fail(&e))?;
+    }
+    Ok(vec![png, svg])
+}
+
 /// Regenerates one output by id into `dir`.
 ///
 /// # Errors
-/// [`Error::UnknownId`] for an unknown id; the errors of [`write_table`].
+/// [`Error::UnknownId`] for an unknown id; the errors of [`OutputSpec::write`].
 pub fn write_only(dir: &Path, id: &str) -> Result<Vec<PathBuf>> {
-    let spec = OUTPUTS
-        .iter()
-        .find(|o| o.id == id)
+    let spec = list_outputs()
+        .into_iter()
+        .find(|o| o.id() == id)
         .ok_or_else(|| Error::UnknownId {
             what: "output",
             id: id.to_string(),
         })?;
-    write_table(&spec.build()?, dir)
+    spec.write(dir)
 }
 
 /// Regenerates every output into `dir`.
 ///
 /// # Errors
-/// The first error of [`write_only`].
+/// The first error of [`OutputSpec::write`].
 pub fn write_all(dir: &Path) -> Result<Vec<PathBuf>> {
     let mut written = Vec::new();
-    for spec in &OUTPUTS {
-        written.extend(write_only(dir, spec.id)?);
+    for spec in list_outputs() {
+        written.extend(spec.write(dir)?);
     }
     Ok(written)
 }

@@ -1,0 +1,289 @@
+//! A small 3-D scene renderer on plotters' `Cartesian3d`: shaded quads drawn back to front
+//! (painter's algorithm, since plotters has no depth buffer), segments and markers on top,
+//! equal axis scaling (MATLAB's `axis equal`).
+
+use crate::report::style::{FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
+use nalgebra::Vector3;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// A filled quadrilateral face.
+#[derive(Debug, Clone, Copy)]
+pub struct Quad {
+    /// Corners in order around the face.
+    pub corners: [Vector3<f64>; 4],
+    /// Base colour before shading.
+    pub color: RGBColor,
+    /// Opacity in `[0, 1]`.
+    pub alpha: f64,
+}
+
+/// A straight segment (derivative vectors, control net).
+#[derive(Debug, Clone, Copy)]
+pub struct Segment {
+    /// Start.
+    pub a: Vector3<f64>,
+    /// End.
+    pub b: Vector3<f64>,
+    /// Colour.
+    pub color: RGBColor,
+    /// Stroke width in pixels.
+    pub width: u32,
+}
+
+/// A round marker (corner points, control points).
+#[derive(Debug, Clone, Copy)]
+pub struct Marker {
+    /// Position.
+    pub at: Vector3<f64>,
+    /// Colour.
+    pub color: RGBColor,
+    /// Radius in pixels.
+    pub radius: u32,
+}
+
+/// Everything one 3-D figure shows.
+#[derive(Debug, Clone, Default)]
+pub struct Scene {
+    /// Faces.
+    pub quads: Vec<Quad>,
+    /// Whether to outline faces (MATLAB `surf` draws its mesh lines).
+    pub mesh_lines: bool,
+    /// Segments, drawn over the faces.
+    pub segments: Vec<Segment>,
+    /// Markers, drawn last.
+    pub markers: Vec<Marker>,
+    /// Legend entries (label, colour), drawn in the top-left corner.
+    pub legend: Vec<(String, RGBColor)>,
+}
+
+impl Scene {
+    /// Adds the faces of a tabulated surface `grid[i][j]` (rows × cols points) in one colour,
+    /// or coloured by height through `color_by_height` when it is `None`.
+    pub fn add_surface(
+        &mut self,
+        grid: &crate::grid::Grid<Vector3<f64>>,
+        color: Option<RGBColor>,
+        alpha: f64,
+    ) {
+        let (zmin, zmax) = grid
+            .as_slice()
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.z), hi.max(p.z))
+            });
+        for i in 0..grid.rows().saturating_sub(1) {
+            for j in 0..grid.cols().saturating_sub(1) {
+                let corners = [
+                    *grid.get(i, j),
+                    *grid.get(i + 1, j),
+                    *grid.get(i + 1, j + 1),
+                    *grid.get(i, j + 1),
+                ];
+                let c = color.unwrap_or_else(|| {
+                    let z = corners.iter().map(|p| p.z).sum::<f64>() / 4.0;
+                    crate::report::style::colormap((z - zmin) / (zmax - zmin).max(1e-300))
+                });
+                self.quads.push(Quad {
+                    corners,
+                    color: c,
+                    alpha,
+                });
+            }
+        }
+    }
+
+    fn bounds(&self) -> (Vector3<f64>, Vector3<f64>) {
+        let pts = self
+            .quads
+            .iter()
+            .flat_map(|q| q.corners)
+            .chain(self.segments.iter().flat_map(|s| [s.a, s.b]))
+            .chain(self.markers.iter().map(|m| m.at));
+        pts.fold(
+            (
+                Vector3::repeat(f64::INFINITY),
+                Vector3::repeat(f64::NEG_INFINITY),
+            ),
+            |(lo, hi), p| (lo.inf(&p), hi.sup(&p)),
+        )
+    }
+}
+
+/// Camera: plotters' yaw (rotation about the vertical axis) and pitch (tilt), in radians.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct View {
+    /// Rotation about the vertical (z) axis.
+    pub yaw: f64,
+    /// Tilt towards the viewer.
+    pub pitch: f64,
+    /// Zoom factor.
+    pub scale: f64,
+}
+
+impl Default for View {
+    /// Close to MATLAB's default 3-D view (azimuth −37.5°, elevation 30°).
+    fn default() -> Self {
+        Self {
+            yaw: 0.65,
+            pitch: 0.5,
+            scale: 0.9,
+        }
+    }
+}
+
+/// Diffuse shading of a face: ambient 0.45 plus 0.55 |n · l| (two-sided), light from the
+/// upper front.
+fn shade(q: &Quad) -> RGBColor {
+    let n = (q.corners[2] - q.corners[0]).cross(&(q.corners[3] - q.corners[1]));
+    let light = Vector3::new(-0.4, -0.5, 0.77).normalize();
+    let k = match n.try_normalize(1e-300) {
+        Some(n) => 0.45 + 0.55 * n.dot(&light).abs(),
+        None => 1.0,
+    };
+    let f = |c: u8| (c as f64 * k).round().min(255.0) as u8;
+    RGBColor(f(q.color.0), f(q.color.1), f(q.color.2))
+}
+
+/// Our `(x, y, z)` as plotters' `(X, Y, Z)`. Plotters' frame is right-handed with Y upwards,
+/// so our z goes to Y; the cyclic permutation `(x, y, z) → (Z, X, Y)` keeps the handedness
+/// (swapping only y and z would mirror every figure).
+fn to_plot(p: &Vector3<f64>) -> (f64, f64, f64) {
+    (p.y, p.z, p.x)
+}
+
+/// Draws `scene` with `title` into `area` (any plotters backend).
+///
+/// # Errors
+/// Whatever the backend reports.
+pub fn draw_scene<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    scene: &Scene,
+    view: View,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let (lo, hi) = scene.bounds();
+    let pad = (hi - lo).amax() * 0.04;
+    let (lo, hi) = (lo.add_scalar(-pad), hi.add_scalar(pad));
+    let ext = hi - lo;
+    let mut chart = ChartBuilder::on(area)
+        .caption(title, (FONT, TITLE_SIZE))
+        .margin(20)
+        .build_cartesian_3d(lo.y..hi.y, lo.z..hi.z, lo.x..hi.x)?;
+    chart.with_projection(|mut pb| {
+        pb.yaw = view.yaw;
+        pb.pitch = view.pitch;
+        pb.scale = view.scale;
+        pb.into_matrix()
+    });
+    // axis equal: pixel extents proportional to data extents
+    let (w, h) = area.dim_in_pixel();
+    let base = (w.min(h) as f64) * 0.8 / ext.amax();
+    let px = |e: f64| ((e * base).round() as i32).max(1);
+    chart.set_3d_pixel_range((px(ext.y), px(ext.z), px(ext.x)));
+    chart
+        .configure_axes()
+        .light_grid_style(BLACK.mix(0.08))
+        .max_light_lines(3)
+        .x_labels(5)
+        .y_labels(5)
+        .z_labels(5)
+        .label_style((FONT, TICK_SIZE))
+        .x_formatter(&|v| format!("{v:.1}"))
+        .y_formatter(&|v| format!("{v:.1}"))
+        .z_formatter(&|v| format!("{v:.1}"))
+        .draw()?;
+
+    // Axis names beside the middle of the edges plotters labels for these views (yaw in
+    // (0, π/2)): its X axis (our y) along the front edge, its Z axis (our x) along the right
+    // edge, its Y axis (our z) at the back-left corner. Positions in plotters' coordinates.
+    let label = (FONT, LABEL_SIZE + 4).into_font().color(&BLACK);
+    let mid = (lo + hi) / 2.0;
+    let off = ext.amax() * 0.3;
+    let names = [
+        ("y", (mid.y, lo.z, hi.x + off)),
+        ("x", (hi.y + off, lo.z, mid.x)),
+        ("z", (lo.y, hi.z + pad, lo.x)),
+    ];
+    chart.draw_series(
+        names
+            .iter()
+            .map(|(n, p)| Text::new(n.to_string(), *p, label.clone())),
+    )?;
+
+    // faces back to front
+    let coord = chart.as_coord_spec().clone();
+    let depth = |q: &Quad| {
+        let c = (q.corners[0] + q.corners[1] + q.corners[2] + q.corners[3]) / 4.0;
+        let (x, y, z) = to_plot(&c);
+        coord.projected_depth(&x, &y, &z)
+    };
+    let mut order: Vec<(i32, &Quad)> = scene.quads.iter().map(|q| (depth(q), q)).collect();
+    order.sort_by_key(|(d, _)| std::cmp::Reverse(*d));
+    let edge = BLACK.mix(0.25);
+    for (_, q) in order {
+        let pts: Vec<(f64, f64, f64)> = q.corners.iter().map(to_plot).collect();
+        chart.draw_series(std::iter::once(Polygon::new(
+            pts.clone(),
+            shade(q).mix(q.alpha).filled(),
+        )))?;
+        if scene.mesh_lines {
+            let mut ring = pts;
+            ring.push(ring[0]);
+            chart.draw_series(std::iter::once(PathElement::new(ring, edge)))?;
+        }
+    }
+    for s in &scene.segments {
+        chart.draw_series(std::iter::once(PathElement::new(
+            vec![to_plot(&s.a), to_plot(&s.b)],
+            s.color.stroke_width(s.width),
+        )))?;
+    }
+    chart.draw_series(
+        scene
+            .markers
+            .iter()
+            .map(|m| Circle::new(to_plot(&m.at), m.radius, m.color.filled())),
+    )?;
+    draw_legend(area, &scene.legend)?;
+    Ok(())
+}
+
+/// A legend box in the top-left corner of `area`: a colour swatch and a label per entry.
+pub fn draw_legend<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[(String, RGBColor)],
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    if entries.is_empty() {
+        return Ok(());
+    }
+    let (x0, y0, line) = (20, 50, LABEL_SIZE as i32 + 8);
+    let width = 40
+        + entries
+            .iter()
+            .map(|(l, _)| l.chars().count())
+            .max()
+            .unwrap_or(0) as i32
+            * 10;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x0 + width, y0 + line * entries.len() as i32 + 8)],
+        WHITE.mix(0.85).filled(),
+    ))?;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x0 + width, y0 + line * entries.len() as i32 + 8)],
+        BLACK.mix(0.4),
+    ))?;
+    for (k, (text, color)) in entries.iter().enumerate() {
+        let y = y0 + 6 + line * k as i32;
+        area.draw(&Rectangle::new(
+            [(x0 + 8, y + 3), (x0 + 28, y + line - 8)],
+            color.filled(),
+        ))?;
+        area.draw(&Text::new(
+            text.clone(),
+            (x0 + 36, y),
+            (FONT, LABEL_SIZE).into_font().color(&BLACK),
+        ))?;
+    }
+    Ok(())
+}
