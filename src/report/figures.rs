@@ -398,7 +398,7 @@ fn fig7() -> Result<Figure3d> {
     let mut scene = meshed();
     // (i + 2j) mod 5 differs between neighbours in u and in v, across the wrap-around too.
     add_spline_patches(&mut scene, &spline, 13, 1.0, false, |i, j| {
-        PATCH_PALETTE[(i + 2 * j) % 5]
+        PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]
     })?;
     Ok(Figure3d {
         title: "Fig 7 — the whole torus as 4×4 = 16 Hermite patches",

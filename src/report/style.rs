@@ -45,15 +45,14 @@ pub fn codice14_color(i: usize) -> RGBColor {
 /// Face opacity of the spline figures (`'FaceAlpha', .8` in Codice 14).
 pub const FACE_ALPHA: f64 = 0.8;
 
-/// Well-separated colours for the patches of a whole surface (Fig 7), colour-blind safe
-/// (Okabe–Ito).
-pub const PATCH_PALETTE: [RGBColor; 6] = [
+/// Five well-separated colours for the patches of a whole surface (Fig 7), from the
+/// colour-blind-safe Okabe–Ito palette: blue, orange, green, reddish purple, yellow.
+pub const PATCH_PALETTE: [RGBColor; 5] = [
     RGBColor(0, 114, 178),
     RGBColor(230, 159, 0),
     RGBColor(0, 158, 115),
     RGBColor(204, 121, 167),
-    RGBColor(86, 180, 233),
-    RGBColor(213, 94, 0),
+    RGBColor(240, 228, 66),
 ];
 
 /// Viridis-like colour map on `[0, 1]` (piecewise linear through five anchors of matplotlib's
