@@ -2,7 +2,7 @@
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use splinelab::report::{bench, list_outputs, write_all, write_only};
+use splinelab::report::{bench, describe_outputs, write_all, write_only};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
@@ -75,9 +75,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         return Ok(());
     }
     if cli.list {
-        for o in list_outputs() {
-            println!("{:<24} {}", o.id(), o.description());
-        }
+        println!("{}", describe_outputs());
         return Ok(());
     }
     let written = if cli.only.is_empty() {

@@ -12,6 +12,7 @@ fn list_names_every_output() {
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     for id in [
+        "torus-partials",
         "t3-error",
         "t4-equivalence",
         "t6-spline-error",

@@ -115,3 +115,14 @@ fn figure_ids_round_trip() {
     }
     assert_eq!(FigureId::from_id("fig9"), None);
 }
+
+#[test]
+fn notebook_svg_is_the_same_drawing() {
+    let svg = splinelab::report::notebook::figure_svg(FigureId::Convergence).expect("svg");
+    assert!(
+        svg.0.starts_with("<svg"),
+        "{}",
+        &svg.0[..svg.0.len().min(80)]
+    );
+    assert!(svg.0.contains("Convergence"), "title missing");
+}

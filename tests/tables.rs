@@ -130,6 +130,21 @@ fn tables_build_with_expected_shapes() {
 }
 
 #[test]
+fn torus_partials_table_shows_dual_equal_to_closed_form() {
+    let t = tables::torus_partials().expect("partials table");
+    assert_eq!(
+        t.df.height(),
+        5 * 3 * 3,
+        "5 points × 3 partials × 3 coordinates"
+    );
+    let diff = t.df.column("abs_difference").expect("column");
+    let worst = (0..t.df.height())
+        .map(|i| diff.get(i).expect("cell").extract::<f64>().expect("f64"))
+        .fold(0.0, f64::max);
+    assert!(worst <= 1e-15, "largest |dual − closed form| = {worst:e}");
+}
+
+#[test]
 fn printed_precision_is_respected() {
     assert!(agrees_to_printed("0.0717", 0.07174443));
     assert!(!agrees_to_printed("0.0717", 0.07176));

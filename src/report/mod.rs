@@ -4,6 +4,7 @@
 
 pub mod bench;
 pub mod figures;
+pub mod notebook;
 pub mod output;
 pub mod printed;
 pub mod render3d;
@@ -11,5 +12,5 @@ pub mod style;
 pub mod tables;
 
 pub use figures::FigureId;
-pub use output::{list_outputs, write_all, write_only, OutputSpec};
+pub use output::{describe_outputs, list_outputs, write_all, write_only, OutputSpec};
 pub use tables::Table;

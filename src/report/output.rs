@@ -69,7 +69,12 @@ impl OutputSpec {
     }
 }
 
-const TABLES: [TableSpec; 4] = [
+const TABLES: [TableSpec; 5] = [
+    TableSpec {
+        id: "torus-partials",
+        description: "Exact partials of the torus from hyper-dual numbers beside the closed forms of Codice 3 (seed 000 §2)",
+        build: tables::torus_partials,
+    },
     TableSpec {
         id: "t3-error",
         description: "Table T3: error of one Hermite patch of the torus on [0,1]² and [0,0.5]² (seed 000 §3), printed vs ours",
@@ -100,6 +105,15 @@ pub fn list_outputs() -> Vec<OutputSpec> {
         .map(OutputSpec::Table)
         .chain(FigureId::ALL.into_iter().map(OutputSpec::Figure))
         .collect()
+}
+
+/// Every output id with its one-line description, one per line (what `--list` prints).
+pub fn describe_outputs() -> String {
+    list_outputs()
+        .iter()
+        .map(|o| format!("{:<24} {}", o.id(), o.description()))
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 fn io_err(path: &Path) -> impl FnOnce(std::io::Error) -> Error + '_ {

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Executes the notebooks headless with the evcxr Rust kernel, installing what is missing:
+# Jupyter's minimal execution stack (nbclient, in a virtual environment) and evcxr_jupyter
+# (cargo install, pinned). Executed copies go to out/notebooks/; the committed notebooks keep
+# no outputs. Fails, naming the notebook and cell, on any cell error, compile error or panic.
+#
+# usage: scripts/notebooks.sh [NOTEBOOK.ipynb ...]   (default: notebooks/[0-9][0-9]-*.ipynb)
+# env:   SPLINELAB_STATE  where the venv and compile caches are kept (default ~/.cache/splinelab)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+export PATH="$HOME/.cargo/bin:$PATH"
+
+EVCXR_VERSION=0.22.0
+NBCLIENT_VERSION=0.11.0
+CELL_TIMEOUT=1800
+
+state="${SPLINELAB_STATE:-$HOME/.cache/splinelab}"
+mkdir -p "$state"
+state="$(cd "$state" && pwd)"   # evcxr needs absolute paths
+venv="$state/venv"
+
+# 1. Python: nbclient provides `jupyter execute`.
+if [ ! -x "$venv/bin/jupyter-execute" ]; then
+    echo "notebooks: installing nbclient $NBCLIENT_VERSION into $venv"
+    python3 -m venv "$venv"
+    "$venv/bin/pip" install --quiet --disable-pip-version-check "nbclient==$NBCLIENT_VERSION"
+fi
+
+# 2. The Rust kernel.
+if ! evcxr_jupyter --version 2>/dev/null | grep -q "$EVCXR_VERSION"; then
+    echo "notebooks: installing evcxr_jupyter $EVCXR_VERSION (about 10 minutes)"
+    CARGO_PROFILE_RELEASE_OPT_LEVEL=1 cargo install --locked --quiet evcxr_jupyter --version "$EVCXR_VERSION"
+fi
+export JUPYTER_PATH="$venv/share/jupyter"
+export JUPYTER_DATA_DIR="$venv/share/jupyter"
+evcxr_jupyter --install >/dev/null
+
+# 3. evcxr settings (:opt 0, :cache, panics fail) and caches kept between runs.
+export EVCXR_CONFIG_DIR="$root/scripts/evcxr"
+export XDG_CACHE_HOME="$state/xdg-cache"
+export EVCXR_TMPDIR="$state/evcxr-tmp"
+mkdir -p "$XDG_CACHE_HOME" "$EVCXR_TMPDIR"
+
+# 4. Execute.
+if [ "$#" -gt 0 ]; then notebooks=("$@"); else notebooks=(notebooks/[0-9][0-9]-*.ipynb); fi
+out="$root/out/notebooks"
+mkdir -p "$out"
+failed=()
+for nb in "${notebooks[@]}"; do
+    name="$(basename "$nb" .ipynb)"
+    dir="$(dirname "$nb")"
+    start=$(date +%s)
+    echo "notebooks: executing $nb"
+    if "$venv/bin/jupyter-execute" --kernel_name=rust --timeout="$CELL_TIMEOUT" \
+        --output="${name}_executed" "$nb"; then
+        mv "$dir/${name}_executed.ipynb" "$out/${name}.ipynb"
+        if "$venv/bin/python" "$root/scripts/check_notebooks.py" "$out/${name}.ipynb"; then
+            echo "notebooks: $nb ok ($(( $(date +%s) - start )) s)"
+            continue
+        fi
+    else
+        [ -f "$dir/${name}_executed.ipynb" ] && mv "$dir/${name}_executed.ipynb" "$out/${name}.ipynb"
+    fi
+    echo "notebooks: $nb FAILED" >&2
+    failed+=("$nb")
+done
+if [ "${#failed[@]}" -gt 0 ]; then
+    echo "notebooks: ${#failed[@]} of ${#notebooks[@]} failed: ${failed[*]}" >&2
+    exit 1
+fi
+echo "notebooks: ${#notebooks[@]} passed, 0 failed"
