@@ -33,6 +33,40 @@ def problems(path):
                     yield number, plain.strip().splitlines()[0]
 
 
+def self_test():
+    """Checks the scanner on synthetic notebooks: each failure kind is caught, a clean one passes."""
+    import os
+    import tempfile
+
+    def notebook(outputs):
+        return {"cells": [{"cell_type": "code", "outputs": outputs, "source": ""}], "nbformat": 4}
+
+    cases = {
+        "error output": (notebook([{"output_type": "error", "ename": "E", "evalue": "x"}]), True),
+        "panic on stderr": (notebook([{"output_type": "stream", "name": "stderr",
+                                       "text": ["thread '<unnamed>' panicked at src/lib.rs:1:1:\n"]}]), True),
+        "compile error": (notebook([{"output_type": "stream", "name": "stderr",
+                                     "text": ["error[E0308]: mismatched types\n"]}]), True),
+        "Err value": (notebook([{"output_type": "execute_result", "data": {"text/plain": ["Error: boom"]}}]), True),
+        "clean with warning": (notebook([{"output_type": "stream", "name": "stderr",
+                                          "text": ["warning: unused variable\n"]},
+                                         {"output_type": "execute_result", "data": {"text/plain": ["42"]}}]), False),
+    }
+    wrong = []
+    with tempfile.TemporaryDirectory() as d:
+        for name, (nb, should_fail) in cases.items():
+            path = os.path.join(d, "case.ipynb")
+            with open(path, "w", encoding="utf-8") as f:
+                json.dump(nb, f)
+            if any(True for _ in problems(path)) != should_fail:
+                wrong.append(name)
+    if wrong:
+        print(f"check_notebooks self-test: wrong verdict for {wrong}", file=sys.stderr)
+        return 1
+    print(f"check_notebooks self-test: {len(cases)} passed, 0 failed")
+    return 0
+
+
 def main(paths):
     failed = False
     for path in paths:
@@ -43,4 +77,6 @@ def main(paths):
 
 
 if __name__ == "__main__":
+    if sys.argv[1:] == ["--self-test"]:
+        sys.exit(self_test())
     sys.exit(main(sys.argv[1:]))

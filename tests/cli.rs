@@ -6,6 +6,20 @@ fn splinelab() -> Command {
     Command::new(env!("CARGO_BIN_EXE_splinelab"))
 }
 
+/// Runs `splinelab --only ID --out DIR` and asserts it succeeded.
+fn regenerate_only(id: &str, dir: &std::path::Path) {
+    let out = splinelab()
+        .args(["--only", id, "--out"])
+        .arg(dir)
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 #[test]
 fn list_names_every_output() {
     let out = splinelab().arg("--list").output().expect("runs");
@@ -25,16 +39,7 @@ fn list_names_every_output() {
 #[test]
 fn only_writes_csv_and_markdown() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let out = splinelab()
-        .args(["--only", "t6-spline-error", "--out"])
-        .arg(dir.path())
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    regenerate_only("t6-spline-error", dir.path());
     let csv = std::fs::read_to_string(dir.path().join("tables/t6-spline-error.csv")).expect("csv");
     assert_eq!(csv.lines().count(), 13, "header + 12 rows:\n{csv}");
     let md = std::fs::read_to_string(dir.path().join("tables/t6-spline-error.md")).expect("md");
@@ -94,16 +99,7 @@ fn bench_prints_json_lines() {
 #[test]
 fn only_draws_one_figure() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let out = splinelab()
-        .args(["--only", "fig2-torus", "--out"])
-        .arg(dir.path())
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    regenerate_only("fig2-torus", dir.path());
     let names: Vec<String> = std::fs::read_dir(dir.path().join("figures"))
         .expect("figures folder")
         .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())

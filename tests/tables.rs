@@ -153,3 +153,17 @@ fn printed_precision_is_respected() {
     assert!(!agrees_to_printed("not a number", 1.0));
     assert!(!agrees_to_printed("0.0717", f64::NAN));
 }
+
+#[test]
+fn notebook_html_shows_every_row_and_escapes() {
+    let t6 = tables::t6().expect("t6");
+    let html = splinelab::report::output::to_html(&t6).expect("html");
+    assert_eq!(html.matches("<tr>").count(), 1 + 12, "header + 12 rows");
+    assert!(!html.contains('…'), "no elided rows");
+    let eq = tables::equivalence().expect("equivalence");
+    let html = splinelab::report::output::to_html(&eq).expect("html");
+    assert!(
+        html.contains("&lt;") || !eq.notes.iter().any(|n| n.contains('<')),
+        "escaped"
+    );
+}

@@ -40,11 +40,13 @@ pub fn figure_svg(figure: FigureId) -> Result<Svg> {
 }
 
 impl Table {
-    /// Shows the title, the DataFrame and the notes in a notebook.
+    /// Shows the title, every row of the DataFrame and the notes in a notebook (HTML; the
+    /// plain DataFrame is `table.df`). Falls back to polars' text display if a cell cannot
+    /// be read.
     pub fn evcxr_display(&self) {
-        println!("{}\n\n{}\n", self.title, self.df);
-        for note in &self.notes {
-            println!("- {note}");
+        match crate::report::output::to_html(self) {
+            Ok(html) => println!("EVCXR_BEGIN_CONTENT text/html\n{html}\nEVCXR_END_CONTENT"),
+            Err(_) => println!("{}\n\n{}", self.title, self.df),
         }
     }
 }

@@ -144,32 +144,45 @@ fn cell(v: &AnyValue) -> String {
     }
 }
 
+/// Column names and every row of the table as display strings (the cell format of
+/// [`to_markdown`] and [`to_html`]).
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot read a cell.
+pub fn display_rows(table: &Table) -> Result<(Vec<String>, Vec<Vec<String>>)> {
+    let df = &table.df;
+    let names = df
+        .get_column_names()
+        .iter()
+        .map(|n| n.to_string())
+        .collect();
+    let rows = (0..df.height())
+        .map(|i| {
+            df.columns()
+                .iter()
+                .map(|c| {
+                    c.get(i).map(|v| cell(&v)).map_err(|e| Error::Table {
+                        id: table.id.to_string(),
+                        message: e.to_string(),
+                    })
+                })
+                .collect()
+        })
+        .collect::<Result<_>>()?;
+    Ok((names, rows))
+}
+
 /// The table as Markdown: title, a pipe table, notes.
 ///
 /// # Errors
 /// [`Error::Table`] if polars cannot read a cell.
 pub fn to_markdown(table: &Table) -> Result<String> {
-    let df = &table.df;
+    let (names, rows) = display_rows(table)?;
     let mut md = format!("# {}\n\n", table.title);
-    let names: Vec<String> = df
-        .get_column_names()
-        .iter()
-        .map(|n| n.to_string())
-        .collect();
     let _ = writeln!(md, "| {} |", names.join(" | "));
     let _ = writeln!(md, "|{}", "---|".repeat(names.len()));
-    for i in 0..df.height() {
-        let row: Result<Vec<String>> = df
-            .columns()
-            .iter()
-            .map(|c| {
-                c.get(i).map(|v| cell(&v)).map_err(|e| Error::Table {
-                    id: table.id.to_string(),
-                    message: e.to_string(),
-                })
-            })
-            .collect();
-        let _ = writeln!(md, "| {} |", row?.join(" | "));
+    for row in rows {
+        let _ = writeln!(md, "| {} |", row.join(" | "));
     }
     if !table.notes.is_empty() {
         md.push('\n');
@@ -178,6 +191,42 @@ pub fn to_markdown(table: &Table) -> Result<String> {
         }
     }
     Ok(md)
+}
+
+fn escape_html(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// The table as an HTML fragment with every row and column (for notebooks, where polars'
+/// text display would elide rows): title, table, notes.
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot read a cell.
+pub fn to_html(table: &Table) -> Result<String> {
+    let (names, rows) = display_rows(table)?;
+    let mut html = format!(
+        "<h4>{}</h4>\n<table>\n<thead><tr>",
+        escape_html(&table.title)
+    );
+    for n in &names {
+        let _ = write!(html, "<th>{}</th>", escape_html(n));
+    }
+    html.push_str("</tr></thead>\n<tbody>\n");
+    for row in rows {
+        html.push_str("<tr>");
+        for c in row {
+            let _ = write!(html, "<td>{}</td>", escape_html(&c));
+        }
+        html.push_str("</tr>\n");
+    }
+    html.push_str("</tbody>\n</table>\n<ul>\n");
+    for note in &table.notes {
+        let _ = writeln!(html, "<li>{}</li>", escape_html(note));
+    }
+    html.push_str("</ul>");
+    Ok(html)
 }
 
 /// Writes `<dir>/tables/<id>.csv` (full precision) and `.md`; returns the paths written.
