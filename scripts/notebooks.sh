@@ -28,7 +28,8 @@ if [ ! -x "$venv/bin/jupyter-execute" ]; then
 fi
 
 # 2. The Rust kernel.
-if ! evcxr_jupyter --version 2>/dev/null | grep -q "$EVCXR_VERSION"; then
+# (evcxr_jupyter has no --version; cargo's install list names the installed version)
+if ! cargo install --list | grep -q "^evcxr_jupyter v$EVCXR_VERSION:"; then
     echo "notebooks: installing evcxr_jupyter $EVCXR_VERSION (about 10 minutes)"
     CARGO_PROFILE_RELEASE_OPT_LEVEL=1 cargo install --locked --quiet evcxr_jupyter --version "$EVCXR_VERSION"
 fi
