@@ -42,6 +42,11 @@ export EVCXR_CONFIG_DIR="$root/scripts/evcxr"
 export XDG_CACHE_HOME="$state/xdg-cache"
 export EVCXR_TMPDIR="$state/evcxr-tmp"
 mkdir -p "$XDG_CACHE_HOME" "$EVCXR_TMPDIR"
+# The kernel dlopens code built with -C prefer-dynamic, which needs the toolchain's libstd.
+# Its relative RUNPATH is computed for cargo's deps/ folder but the library is loaded from
+# one level up, so under $HOME (e.g. ~/.cache/…) it points at /.rustup and dlopen fails;
+# naming the folder of libstd (rustc --print target-libdir) works wherever the state lives.
+export LD_LIBRARY_PATH="$(rustc --print target-libdir)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
 # 4. Execute.
 if [ "$#" -gt 0 ]; then notebooks=("$@"); else notebooks=(notebooks/[0-9][0-9]-*.ipynb); fi

@@ -6,7 +6,7 @@
 //! `X + X_s ε₁ + X_t ε₂ + X_st ε₁ε₂` exactly (to rounding), with no symbolic algebra and no
 //! finite differences.
 
-use crate::domain::{Interval, Rect};
+use crate::domain::Rect;
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 use nalgebra::Vector3;
@@ -333,12 +333,4 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
             scope.spawn(move || fill(rows, block));
         }
     });
-}
-
-/// Samples of an interval, for callers that have bounds but no [`Interval`] yet.
-///
-/// # Errors
-/// As [`Interval::try_new`] and [`Interval::linspace`].
-pub fn linspace(a: f64, b: f64, n: usize) -> Result<Vec<f64>> {
-    Interval::try_new(a, b)?.linspace(n)
 }
