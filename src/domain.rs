@@ -148,19 +148,23 @@ impl Partition {
     /// [`Error::PartitionTooShort`] for fewer than 2 nodes, [`Error::NonFinite`] for a NaN or
     /// infinite node, [`Error::NotIncreasing`] unless the nodes strictly increase.
     pub fn try_new(nodes: Vec<f64>) -> Result<Self> {
-        const WHAT: &str = "partition";
+        Self::named("partition", nodes)
+    }
+
+    /// [`Partition::try_new`] with `what` naming the input in errors.
+    pub(crate) fn named(what: &'static str, nodes: Vec<f64>) -> Result<Self> {
         if nodes.len() < 2 {
             return Err(Error::PartitionTooShort {
-                what: WHAT,
+                what,
                 got: nodes.len(),
             });
         }
         for &x in &nodes {
-            finite(WHAT, x)?;
+            finite(what, x)?;
         }
         if let Some(index) = (1..nodes.len()).find(|&k| nodes[k] <= nodes[k - 1]) {
             return Err(Error::NotIncreasing {
-                what: WHAT,
+                what,
                 index,
                 value: nodes[index],
                 prev: nodes[index - 1],

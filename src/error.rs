@@ -103,6 +103,118 @@ pub enum Error {
         /// Columns of the second grid.
         right_cols: usize,
     },
+    /// A knot vector (or a basis) needs more knots.
+    #[error("knot vector: at least {needed} knots are needed, got {got}")]
+    TooFewKnots {
+        /// How many are needed.
+        needed: usize,
+        /// How many were given.
+        got: usize,
+    },
+    /// Knots must be non-decreasing.
+    #[error("knot vector: knot {index} ({value}) is smaller than knot {prev_index} ({prev})", prev_index = index - 1)]
+    KnotsNotSorted {
+        /// Index of the first knot smaller than its predecessor.
+        index: usize,
+        /// Its value.
+        value: f64,
+        /// The predecessor's value.
+        prev: f64,
+    },
+    /// A knot is repeated more often than the order allows (or a multiplicity is 0).
+    #[error(
+        "knot multiplicity {multiplicity} at breakpoint {index} is not in 1..={max} (the order)"
+    )]
+    MultiplicityTooHigh {
+        /// Index of the breakpoint (distinct knot value).
+        index: usize,
+        /// Its multiplicity.
+        multiplicity: usize,
+        /// The largest allowed, the order `p + 1`.
+        max: usize,
+    },
+    /// A spline order of 0 was asked for (the order is degree + 1 ≥ 1).
+    #[error("the order of a spline must be at least 1, got 0")]
+    ZeroOrder,
+    /// A degree (or order) too low for the method.
+    #[error("degree (or order) {got} is too low: at least {min} is needed")]
+    DegreeTooLow {
+        /// The smallest allowed.
+        min: usize,
+        /// What was given.
+        got: usize,
+    },
+    /// Two inputs that must match in length do not.
+    #[error("{what}: expected {expected}, got {got}")]
+    CountMismatch {
+        /// What is counted.
+        what: &'static str,
+        /// The count required.
+        expected: usize,
+        /// The count given.
+        got: usize,
+    },
+    /// An index past the end of a collection.
+    #[error("{what} index {index} is out of range (length {len})")]
+    IndexOutOfRange {
+        /// Which collection.
+        what: &'static str,
+        /// The index given.
+        index: usize,
+        /// The collection's length.
+        len: usize,
+    },
+    /// A NURBS weight that is not positive and finite.
+    #[error("weight {index} must be positive and finite, got {value}")]
+    NonPositiveWeight {
+        /// Index of the weight.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// Two interpolation abscissae (or parameters) are equal.
+    #[error("{what}: value {index} ({value}) repeats the previous one; interpolation needs distinct values")]
+    RepeatedParameter {
+        /// Which input.
+        what: &'static str,
+        /// Index of the repeated value.
+        index: usize,
+        /// The value.
+        value: f64,
+    },
+    /// Two consecutive points coincide, so a distance-based parametrization cannot separate them.
+    #[error("point {index} coincides with point {prev_index}: chord-based parameters would repeat", prev_index = index - 1)]
+    RepeatedPoint {
+        /// Index of the second of the two points.
+        index: usize,
+    },
+    /// Periodic (cyclic) end conditions need data whose first and last values coincide.
+    #[error(
+        "periodic ends need the first and last data points to coincide; they are {distance} apart"
+    )]
+    PeriodicEndsMismatch {
+        /// Distance between the first and last values.
+        distance: f64,
+    },
+    /// A linear system has no unique solution (or its solve broke down numerically).
+    #[error("{what} is singular")]
+    SingularSystem {
+        /// Which system.
+        what: &'static str,
+    },
+    /// The Schoenberg–Whitney condition fails: a collocation site lies outside the support of
+    /// its basis function, so the interpolation problem has no unique solution.
+    #[error("Schoenberg–Whitney condition fails: site {index} ({site}) is outside the support [{support_start}, {support_end}) of basis function {index}")]
+    SchoenbergWhitney {
+        /// Index `j` of the site and of the basis function.
+        index: usize,
+        /// The site `x_j`.
+        site: f64,
+        /// Start `t_j` of the support.
+        support_start: f64,
+        /// End `t_{j+p+1}` of the support.
+        support_end: f64,
+    },
     /// Reading or writing a file failed.
     #[error("{path}: {message}")]
     Io {

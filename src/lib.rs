@@ -1,9 +1,9 @@
 //! # splinelab
 //!
-//! Numerical methods of computer graphics — Hermite, Bézier, spline surfaces — with exact
-//! derivatives from dual numbers ([`num_dual`]) instead of a symbolic toolbox, and the
-//! figures and tables of the course report *Interpolazione di superfici alla Hermite*
-//! regenerated from code.
+//! Numerical methods of computer graphics — Hermite, Bézier, B-spline, NURBS and
+//! interpolating splines — with exact derivatives from dual numbers ([`num_dual`]) instead
+//! of a symbolic toolbox, and the figures and tables of the course report *Interpolazione di
+//! superfici alla Hermite* and of the lecture notes behind it regenerated from code.
 //!
 //! - [`ParametricSurface`]: a surface written once, generic over the number type;
 //!   [`SurfaceDerivatives`] gives `X, X_s, X_t, X_st` exactly ([`Torus`], [`Sphere`],
@@ -12,30 +12,55 @@
 //!   [`HermiteSpline`] (piecewise surfaces over partitions).
 //! - [`metrics`] and [`study`]: the report's error measure (MATLAB `norm`), max-abs, RMS,
 //!   the §3/§6 experiments and a convergence study.
-//! - [`report`]: tables (polars), output files and benchmarks used by the `splinelab` CLI.
+//! - [`KnotVector`], [`BSplineBasis`], [`BSplineCurve`], [`NurbsCurve`]: B-splines and NURBS
+//!   (seed 001), generic over dimension and number type.
+//! - [`interp`]: polynomial interpolation ([`PowerPolynomial`], [`Lagrange`]), parametrizations,
+//!   [`PiecewiseLinear`], [`CubicSpline`] with clamped, natural, periodic and anticyclic ends,
+//!   B-spline collocation.
+//! - [`blending`]: seed 003's blending functions, the printed `bspline` and OpenGL-evaluator
+//!   procedures, the sliding bicubic surface.
+//! - [`report`]: tables (polars), figures (plotters), output files and benchmarks used by the
+//!   `splinelab` CLI and the notebooks.
 
 pub mod bezier;
+pub mod blending;
+pub mod bspline;
 pub mod domain;
 pub mod error;
 pub mod grid;
 pub mod hermite;
+mod horner;
+pub mod interp;
 pub mod metrics;
+pub mod nurbs;
 pub mod report;
 pub mod study;
 pub mod surface;
 pub mod tensor;
+mod tridiagonal;
 
 pub use bezier::bernstein::{bernstein3, bernstein_all, bernstein_sum};
 pub use bezier::codice7::report_codice7_net;
-pub use bezier::de_casteljau::{de_casteljau, de_casteljau_surface};
+pub use bezier::de_casteljau::{
+    de_casteljau, de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface,
+};
 pub use bezier::patch::BezierPatch;
+pub use blending::functions::{lagrange4, printed_setbval, uniform_bspline4, Blending};
+pub use bspline::basis::BSplineBasis;
+pub use bspline::curve::{signed_curvature, BSplineCurve};
+pub use bspline::knots::{EndKnots, KnotVector};
 pub use domain::{Interval, Partition, Rect};
 pub use error::{Error, Result};
 pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::patch::HermitePatch;
 pub use hermite::spline_surface::HermiteSpline;
+pub use interp::cubic::{CubicSpline, EndCondition};
+pub use interp::linear::PiecewiseLinear;
+pub use interp::param::Parametrization;
+pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
 pub use metrics::{compare, matlab_norm, CoordErrors};
+pub use nurbs::NurbsCurve;
 pub use study::{convergence, spline_errors, uniform_spline_errors, PatchEvaluation};
 pub use surface::{
     partials_on_grid, partials_on_grid_into, tabulate, ExpSurface, FnSurface, ParametricSurface,

@@ -5,6 +5,7 @@ use nalgebra::Vector3;
 use plotters::prelude::{BitMapBackend, IntoDrawingArea, RGBColor, WHITE};
 use splinelab::report::figures::FigureId;
 use splinelab::report::output::write_figure;
+use splinelab::report::plot2d::{Figure2d, Panel, Series, Style};
 use splinelab::report::render3d::{draw_scene, Marker, Scene, View};
 use splinelab::report::style::{ensure_font, FIGURE_SIZE};
 use splinelab::Error;
@@ -13,6 +14,11 @@ use splinelab::Error;
 /// or white; surfaces, vectors and data series are coloured. An axes-only 3-D chart has none
 /// (see `an_axes_only_chart_fails_the_ink_check`), the sparsest real figure about 1.7 %.
 const MIN_INK: f64 = 0.01;
+
+/// The same for plane figures (curves on axes), where a single curve of width 3 inks under
+/// 1 %: an axes-only plane chart has none (`an_empty_plane_chart_fails_the_ink_check`), the
+/// sparsest real one about 0.8 %.
+const MIN_INK_PLANE: f64 = 0.004;
 
 /// A pixel is coloured when its channels differ by more than this.
 const CHROMA: u8 = 40;
@@ -66,6 +72,29 @@ fn an_axes_only_chart_fails_the_ink_check() {
 }
 
 #[test]
+fn an_empty_plane_chart_fails_the_ink_check() {
+    // Control: a plane figure whose only series is two black points setting the axes.
+    ensure_font().expect("font");
+    let figure = Figure2d::new(
+        "axes only",
+        vec![Panel::new("empty", "x", "y").with(
+            Series::line("corners", vec![(0.0, 0.0), (1.0, 1.0)], RGBColor(0, 0, 0))
+                .styled(Style::Points(1)),
+        )],
+        (1, 1),
+    );
+    let buffer = render_to_buffer(|root| {
+        root.fill(&WHITE).expect("fill");
+        figure.draw(root).expect("draws");
+    });
+    let share = ink(buffer.chunks(3).map(|c| [c[0], c[1], c[2]]));
+    assert!(
+        share < MIN_INK_PLANE / 10.0,
+        "axes-only plane chart counts as inked: {share:.5}"
+    );
+}
+
+#[test]
 fn every_figure_renders_png_and_svg() {
     let dir = tempfile::tempdir().expect("tempdir");
     for fig in FigureId::ALL {
@@ -76,9 +105,14 @@ fn every_figure_renders_png_and_svg() {
         let img = image::open(&png).expect("PNG decodes").to_rgb8();
         assert_eq!(img.dimensions(), FIGURE_SIZE, "{} size", fig.id());
         let share = ink(img.pixels().map(|p| p.0));
+        let min = if fig.is_plane() {
+            MIN_INK_PLANE
+        } else {
+            MIN_INK
+        };
         assert!(
-            share > MIN_INK,
-            "{} is nearly blank: {:.3} of pixels inked",
+            share > min,
+            "{} is nearly blank: {:.4} of pixels inked, minimum {min}",
             fig.id(),
             share
         );

@@ -54,6 +54,81 @@ where
     Ok(reduce(&mut points.to_vec(), u))
 }
 
+/// de Casteljau as printed in seed 003 (`castel`): the point of level `k` with index `i` is the
+/// interpolation `(1 − u) P(i, k−1) + u P(i+1, k−1)` of two points of the level below, each
+/// computed by a recursive call, down to the control points. Written as the listing (called
+/// as `castel(punti, 0, PointCount − 1, u)`), so it makes `2ⁿ⁻¹ − 1` calls for `n` points —
+/// exponential, unlike the `O(n²)` iterative [`de_casteljau`]; the notes' remark that their
+/// program cannot draw curves of more than 20 control points with it fits this cost.
+///
+/// # Errors
+/// [`Error::TooFewPoints`] below 2 points (the listing would recurse without end on one).
+///
+/// # Examples
+/// ```
+/// use nalgebra::Vector2;
+/// let p = [Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0), Vector2::new(2.0, 0.0)];
+/// let a = splinelab::de_casteljau_recursive(&p, 0.3).unwrap();
+/// let b = splinelab::de_casteljau(&p, 0.3).unwrap();
+/// assert!((a - b).norm() < 1e-15);
+/// ```
+pub fn de_casteljau_recursive<P, D>(points: &[P], u: D) -> Result<P>
+where
+    P: Clone + Add<Output = P> + Mul<D, Output = P>,
+    D: DualNum<Primitive = f64> + Copy,
+{
+    fn castel<P, D>(points: &[P], i: usize, level: usize, u: D) -> P
+    where
+        P: Clone + Add<Output = P> + Mul<D, Output = P>,
+        D: DualNum<Primitive = f64> + Copy,
+    {
+        let r = -u + 1.0;
+        if level == 1 {
+            points[i].clone() * r + points[i + 1].clone() * u
+        } else {
+            castel(points, i, level - 1, u) * r + castel(points, i + 1, level - 1, u) * u
+        }
+    }
+    if points.len() < 2 {
+        return Err(Error::TooFewPoints {
+            what: "recursive de Casteljau control points",
+            needed: 2,
+            got: points.len(),
+        });
+    }
+    Ok(castel(points, 0, points.len() - 1, u))
+}
+
+/// Every level of de Casteljau's triangle at `u`: level 0 is the control polygon, level `k`
+/// the `n − k` points `(1 − u) Qᵢ + u Qᵢ₊₁` of level `k − 1`, the last level the curve point
+/// (seed 003's construction figures at `u = 0.3, 0.5, 0.7`).
+///
+/// # Errors
+/// [`Error::TooFewPoints`] for an empty slice.
+pub fn de_casteljau_levels<P, D>(points: &[P], u: D) -> Result<Vec<Vec<P>>>
+where
+    P: Clone + Add<Output = P> + Mul<D, Output = P>,
+    D: DualNum<Primitive = f64> + Copy,
+{
+    if points.is_empty() {
+        return Err(Error::TooFewPoints {
+            what: "de Casteljau control points",
+            needed: 1,
+            got: 0,
+        });
+    }
+    let r = -u + 1.0;
+    let mut levels = vec![points.to_vec()];
+    while let Some(last) = levels.last().filter(|l| l.len() > 1) {
+        let next = last
+            .windows(2)
+            .map(|w| w[0].clone() * r + w[1].clone() * u)
+            .collect();
+        levels.push(next);
+    }
+    Ok(levels)
+}
+
 /// The point at `(u, v)` of the tensor-product Bézier surface with control net `net`
 /// (row `i` ↔ the `i`-th u control index), as Codice 11: each row is reduced in `v`, then the
 /// resulting column of points in `u`. Any degree in each direction.

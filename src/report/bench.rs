@@ -1,13 +1,19 @@
 //! Benchmark workloads of the `splinelab bench` subcommand, one JSON line each.
 
 use crate::bezier::patch::BezierPatch;
+use crate::bspline::basis::BSplineBasis;
+use crate::bspline::curve::BSplineCurve;
+use crate::bspline::knots::KnotVector;
 use crate::domain::{linspace, Partition, Rect};
 use crate::error::{Error, Result};
 use crate::hermite::patch::HermitePatch;
 use crate::hermite::spline_surface::HermiteSpline;
+use crate::interp::cubic::{CubicSpline, EndCondition};
+use crate::nurbs::NurbsCurve;
 use crate::report::printed::T6;
 use crate::study::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
 use crate::surface::{partials_on_grid, Torus};
+use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -109,8 +115,103 @@ fn torus_grid() -> Result<usize> {
     })
 }
 
+/// Inputs of the curve workloads, built once (outside the timed runs).
+struct CurveInputs {
+    bspline: BSplineCurve<3>,
+    bspline_params: Vec<f64>,
+    spline_x: Vec<f64>,
+    spline_y: Vec<f64>,
+    spline: CubicSpline<1>,
+    spline_params: Vec<f64>,
+    circle: NurbsCurve<2>,
+    circle_params: Vec<f64>,
+}
+
+/// Control points of the `bspline-curve` workload.
+const BSPLINE_POINTS: usize = 60;
+/// Parameters of the `bspline-curve` and `nurbs-circle` workloads.
+const CURVE_PARAMS: usize = 1_000_000;
+/// Data points of the `cubic-spline-build` workload.
+const SPLINE_POINTS: usize = 1_000_000;
+/// Evaluation points of the `cubic-spline-eval` workload.
+const SPLINE_EVALS: usize = 10_000_000;
+
+fn curve_inputs() -> Result<&'static CurveInputs> {
+    static INPUTS: std::sync::OnceLock<Result<CurveInputs>> = std::sync::OnceLock::new();
+    INPUTS
+        .get_or_init(|| {
+            // a helix-like polygon: degree 3, clamped knots with uniform interior
+            let points: Vec<Vector3<f64>> = (0..BSPLINE_POINTS)
+                .map(|i| {
+                    let a = 0.4 * i as f64;
+                    Vector3::new(a.cos(), a.sin(), 0.05 * i as f64)
+                })
+                .collect();
+            let knots = KnotVector::open_uniform(3, BSPLINE_POINTS, 0.0, 1.0)?;
+            let bspline = BSplineCurve::try_new(BSplineBasis::try_new(knots, 3)?, points)?;
+            let spline_x = linspace(0.0, 1000.0, SPLINE_POINTS);
+            let spline_y: Vec<f64> = spline_x.iter().map(|x| x.sin()).collect();
+            let spline = CubicSpline::function(&spline_x, &spline_y, EndCondition::Natural)?;
+            Ok(CurveInputs {
+                bspline,
+                bspline_params: linspace(0.0, 1.0, CURVE_PARAMS),
+                spline_params: linspace(0.0, 1000.0, SPLINE_EVALS),
+                spline_x,
+                spline_y,
+                spline,
+                circle: NurbsCurve::circle9(Vector2::zeros(), 1.0)?,
+                circle_params: linspace(0.0, 1.0, CURVE_PARAMS),
+            })
+        })
+        .as_ref()
+        .map_err(Clone::clone)
+}
+
+thread_local! {
+    static POINTS3: std::cell::RefCell<Vec<Vector3<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
+    static POINTS2: std::cell::RefCell<Vec<Vector2<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
+    static VALUES: std::cell::RefCell<Vec<f64>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+fn bspline_curve() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    POINTS3.with(|buf| {
+        let mut out = buf.borrow_mut();
+        inputs.bspline.eval_many(&inputs.bspline_params, &mut out);
+        Ok(black_box(&*out).len())
+    })
+}
+
+fn cubic_spline_build() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    let s = CubicSpline::function(
+        black_box(&inputs.spline_x),
+        black_box(&inputs.spline_y),
+        EndCondition::Natural,
+    )?;
+    Ok(black_box(s).nodes().len())
+}
+
+fn cubic_spline_eval() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    VALUES.with(|buf| {
+        let mut out = buf.borrow_mut();
+        inputs.spline.values_into(&inputs.spline_params, &mut out);
+        Ok(black_box(&*out).len())
+    })
+}
+
+fn nurbs_circle() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    POINTS2.with(|buf| {
+        let mut out = buf.borrow_mut();
+        inputs.circle.eval_many(&inputs.circle_params, &mut out);
+        Ok(black_box(&*out).len())
+    })
+}
+
 /// Every workload.
-pub const WORKLOADS: [Workload; 5] = [
+pub const WORKLOADS: [Workload; 9] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
@@ -135,6 +236,26 @@ pub const WORKLOADS: [Workload; 5] = [
         id: "torus-grid",
         description: "whole torus as 16×16 patches, built and tabulated on 1024×1024 nodes (output buffer reused)",
         run: torus_grid,
+    },
+    Workload {
+        id: "bspline-curve",
+        description: "cubic B-spline, 60 control points in 3-D, clamped uniform knots, at 1e6 sorted parameters",
+        run: bspline_curve,
+    },
+    Workload {
+        id: "cubic-spline-build",
+        description: "natural cubic spline through 1e6 points (x sorted in [0, 1000], y = sin x), O(n) build",
+        run: cubic_spline_build,
+    },
+    Workload {
+        id: "cubic-spline-eval",
+        description: "that spline evaluated at 1e7 sorted points",
+        run: cubic_spline_eval,
+    },
+    Workload {
+        id: "nurbs-circle",
+        description: "the 9-point NURBS circle at 1e6 parameters",
+        run: nurbs_circle,
     },
 ];
 

@@ -1,19 +1,24 @@
-//! The report's figures 1–8 and two beyond it, drawn with plotters by functions generic over
-//! the drawing backend, so files (PNG, SVG) and notebooks (`evcxr_figure`) show one picture.
+//! Every figure: the report's figures 1–8 and two beyond it, and the figures of the lecture
+//! seeds 001 and 003, drawn with plotters by functions generic over the drawing backend, so
+//! files (PNG, SVG) and notebooks (`evcxr_figure`) show one picture.
 //!
 //! Seed 000 lost its figures; only captions and the listings that drew them remain. Each
-//! figure here is rebuilt from those (Codice 1, 2, 5, 9, 14 and the prose).
+//! figure here is rebuilt from those (Codice 1, 2, 5, 9, 14 and the prose). The plane figures
+//! of seeds 001 and 003 are built in [`crate::report::curve_figures`].
 
 use crate::bezier::patch::BezierPatch;
+use crate::blending::functions::Blending;
+use crate::blending::surface::SlidingBicubic;
 use crate::domain::{Partition, Rect};
 use crate::error::{Error, Result};
 use crate::grid::Grid;
 use crate::hermite::patch::HermitePatch;
 use crate::hermite::spline_surface::HermiteSpline;
+use crate::report::plot2d::Figure2d;
 use crate::report::render3d::{draw_scene, Marker, Scene, Segment, View};
 use crate::report::style::{
     codice14_color, colormap, ensure_font, CODICE14_COLORS, FACE_ALPHA, FONT, LABEL_SIZE,
-    PATCH_PALETTE, TICK_SIZE, TITLE_SIZE,
+    LINE_PALETTE, PATCH_PALETTE, TICK_SIZE, TITLE_SIZE,
 };
 use crate::study::{convergence, ConvergenceRow, REPORT_PREC};
 use crate::surface::{tabulate, SurfaceDerivatives, Torus};
@@ -50,11 +55,39 @@ pub enum FigureId {
     Convergence,
     /// Beyond: where the error lives, over the parameter domain of the n = m = 3 case.
     ErrorMap,
+    /// Seed 001: the B-spline bases of degree 1 and 2.
+    BSplineBases,
+    /// Seed 001: locality — moving P₄ of a cubic changes it only on [¼, 1).
+    BSplineLocality,
+    /// Seed 001: the quadratic spline curve with knots at eighths.
+    BSplineQuadratic,
+    /// Seed 001: the exact circles from 7 and 9 weighted control points.
+    NurbsCircles,
+    /// Seed 001: one NURBS weight as a shape parameter.
+    NurbsWeights,
+    /// Seed 001: Runge's phenomenon.
+    Runge,
+    /// Seed 001: uniform, chord-length and centripetal parameters.
+    Parametrizations,
+    /// Seeds 001 and 004: the four end conditions of the cubic spline.
+    CubicSplineEnds,
+    /// Seed 003: de Casteljau's construction at u = 0.3, 0.5, 0.7.
+    DeCasteljau,
+    /// Seed 003: Lagrange and uniform cubic B-spline blending functions.
+    BlendingFunctions,
+    /// Seed 003: sliding windows, Lagrange vs the printed `bspline` procedure.
+    BlendingCurves,
+    /// Seed 003: the four-way comparison for 6 and 7 control points.
+    FourWay,
+    /// Seed 003: the OpenGL-evaluator spline, intended vs as printed.
+    OpenGlEvaluator,
+    /// Seed 003: the bicubic surface over a sliding 4×4 window.
+    SlidingBicubic,
 }
 
 impl FigureId {
     /// All figures.
-    pub const ALL: [FigureId; 10] = [
+    pub const ALL: [FigureId; 24] = [
         FigureId::PatchDerivatives,
         FigureId::Torus,
         FigureId::TorusCorners,
@@ -65,6 +98,20 @@ impl FigureId {
         FigureId::NinePatches,
         FigureId::Convergence,
         FigureId::ErrorMap,
+        FigureId::BSplineBases,
+        FigureId::BSplineLocality,
+        FigureId::BSplineQuadratic,
+        FigureId::NurbsCircles,
+        FigureId::NurbsWeights,
+        FigureId::Runge,
+        FigureId::Parametrizations,
+        FigureId::CubicSplineEnds,
+        FigureId::DeCasteljau,
+        FigureId::BlendingFunctions,
+        FigureId::BlendingCurves,
+        FigureId::FourWay,
+        FigureId::OpenGlEvaluator,
+        FigureId::SlidingBicubic,
     ];
 
     /// Output id (file stem).
@@ -80,6 +127,20 @@ impl FigureId {
             FigureId::NinePatches => "fig8-nine-patches",
             FigureId::Convergence => "fig-convergence",
             FigureId::ErrorMap => "fig-error-map",
+            FigureId::BSplineBases => "fig-bspline-bases",
+            FigureId::BSplineLocality => "fig-bspline-locality",
+            FigureId::BSplineQuadratic => "fig-bspline-quadratic",
+            FigureId::NurbsCircles => "fig-nurbs-circles",
+            FigureId::NurbsWeights => "fig-nurbs-weights",
+            FigureId::Runge => "fig-runge",
+            FigureId::Parametrizations => "fig-parametrizations",
+            FigureId::CubicSplineEnds => "fig-cubic-spline-ends",
+            FigureId::DeCasteljau => "fig-de-casteljau",
+            FigureId::BlendingFunctions => "fig-blending-functions",
+            FigureId::BlendingCurves => "fig-blending-curves",
+            FigureId::FourWay => "fig-four-way",
+            FigureId::OpenGlEvaluator => "fig-opengl-evaluator",
+            FigureId::SlidingBicubic => "fig-sliding-bicubic",
         }
     }
 
@@ -108,7 +169,49 @@ impl FigureId {
             FigureId::ErrorMap => {
                 "Beyond: interpolation error |X_h − X| over the parameter domain, n = m = 3"
             }
+            FigureId::BSplineBases => {
+                "Seed 001: B-spline bases n = 1, knots (0,0,1,2,3,4,5,5), and n = 2, (0,0,0,1,2,3,4,4,4)"
+            }
+            FigureId::BSplineLocality => {
+                "Seed 001: moving P₄ of the cubic on {0,0,0,0,¼,½,¾,1,1,1,1} changes it only on [¼, 1)"
+            }
+            FigureId::BSplineQuadratic => {
+                "Seed 001: quadratic spline curve, knots {0,0,0,1/8,…,7/8,1,1,1}"
+            }
+            FigureId::NurbsCircles => "Seed 001: the exact NURBS circle from 7 and from 9 control points",
+            FigureId::NurbsWeights => "Seed 001: the effect of one NURBS weight on the curve",
+            FigureId::Runge => {
+                "Seed 001: Runge's phenomenon, degree 9, equispaced vs Chebyshev nodes, error vs degree"
+            }
+            FigureId::Parametrizations => {
+                "Seed 001: uniform, chord-length and centripetal parameters for a spline curve"
+            }
+            FigureId::CubicSplineEnds => {
+                "Seeds 001, 004: cubic spline with clamped, natural, periodic and anticyclic ends"
+            }
+            FigureId::DeCasteljau => "Seed 003: de Casteljau's construction at u = 0.3, 0.5, 0.7",
+            FigureId::BlendingFunctions => {
+                "Seed 003: Lagrange 4-point and uniform cubic B-spline blending functions"
+            }
+            FigureId::BlendingCurves => {
+                "Seed 003: sliding windows, Lagrange (interpolating) vs the bspline procedure"
+            }
+            FigureId::FourWay => {
+                "Seed 003: cubic spline, OpenGL spline, Casteljau, Bézier for 6 and 7 points"
+            }
+            FigureId::OpenGlEvaluator => {
+                "Seed 003: the OpenGL-evaluator spline, last group intended vs as printed"
+            }
+            FigureId::SlidingBicubic => {
+                "Seed 003: bicubic surface of a 4×4 window sliding over a 7×7 grid"
+            }
         }
+    }
+
+    /// Whether the figure is a plane chart (curves on Cartesian axes) rather than a shaded 3-D
+    /// scene or a colour map.
+    pub fn is_plane(self) -> bool {
+        matches!(self.figure2d(), Ok(Some(_))) || self == FigureId::Convergence
     }
 
     /// Finds a figure by id.
@@ -140,11 +243,35 @@ impl FigureId {
                 draw_convergence(area, &rows).map_err(plot)
             }
             FigureId::ErrorMap => draw_error_map(area, &error_map()?).map_err(plot),
-            three_d => {
-                let f = three_d.figure3d()?;
-                draw_scene(area, f.title, &f.scene, f.view).map_err(plot)
-            }
+            other => match other.figure2d()? {
+                Some(figure) => figure.draw(area).map_err(plot),
+                None => {
+                    let f = other.figure3d()?;
+                    draw_scene(area, f.title, &f.scene, f.view).map_err(plot)
+                }
+            },
         }
+    }
+
+    /// The plane figures of the lecture seeds; `None` for the others.
+    fn figure2d(self) -> Result<Option<Figure2d>> {
+        use crate::report::curve_figures as cf;
+        Ok(Some(match self {
+            FigureId::BSplineBases => cf::bspline_bases()?,
+            FigureId::BSplineLocality => cf::bspline_locality()?,
+            FigureId::BSplineQuadratic => cf::bspline_quadratic()?,
+            FigureId::NurbsCircles => cf::nurbs_circles()?,
+            FigureId::NurbsWeights => cf::nurbs_weights()?,
+            FigureId::Runge => cf::runge_figure()?,
+            FigureId::Parametrizations => cf::parametrizations()?,
+            FigureId::CubicSplineEnds => cf::cubic_spline_ends()?,
+            FigureId::DeCasteljau => cf::de_casteljau_figure()?,
+            FigureId::BlendingFunctions => cf::blending_functions()?,
+            FigureId::BlendingCurves => cf::blending_curves()?,
+            FigureId::FourWay => cf::four_way()?,
+            FigureId::OpenGlEvaluator => cf::opengl_last_group()?,
+            _ => return Ok(None),
+        }))
     }
 
     /// The scene of a 3-D figure (all but the two 2-D ones).
@@ -158,7 +285,8 @@ impl FigureId {
             FigureId::SplinePatches => fig6(),
             FigureId::WholeTorus => fig7(),
             FigureId::NinePatches => fig8(),
-            FigureId::Convergence | FigureId::ErrorMap => Err(Error::Figure {
+            FigureId::SlidingBicubic => sliding_bicubic(),
+            _ => Err(Error::Figure {
                 id: self.id().to_string(),
                 message: "not a 3-D figure".into(),
             }),
@@ -429,13 +557,64 @@ fn fig8() -> Result<Figure3d> {
     })
 }
 
+/// Seed 003: the bicubic surface of a 4×4 window sliding over a 7×7 grid of points
+/// `z = f(x, y)`, uniform cubic B-spline blending, one colour per cell, the grid as markers.
+fn sliding_bicubic() -> Result<Figure3d> {
+    let grid = crate::report::curve_data::sliding_grid();
+    let surface = SlidingBicubic::try_new(&grid, Blending::UniformBSpline)?;
+    let mut scene = meshed();
+    let (rows, cols) = surface.cells();
+    for i in 0..rows {
+        for j in 0..cols {
+            let patch = surface.tabulate_cell((i, j), 9)?;
+            scene.add_surface(
+                &patch,
+                Some(PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]),
+                0.9,
+            );
+        }
+    }
+    let dark = RGBColor(40, 40, 40);
+    for i in 0..grid.rows() {
+        for j in 0..grid.cols() {
+            for (a, b) in [(i + 1, j), (i, j + 1)] {
+                if a < grid.rows() && b < grid.cols() {
+                    scene.segments.push(Segment {
+                        a: *grid.get(i, j),
+                        b: *grid.get(a, b),
+                        color: RGBColor(150, 150, 150),
+                        width: 1,
+                    });
+                }
+            }
+            scene.markers.push(Marker {
+                at: *grid.get(i, j),
+                color: dark,
+                radius: 4,
+            });
+        }
+    }
+    scene.legend = vec![
+        ("7×7 grid of points z = f(x, y) and its net".into(), dark),
+        (
+            "one colour per cell (4×4 window position)".into(),
+            PATCH_PALETTE[0],
+        ),
+    ];
+    Ok(Figure3d {
+        title: "Sliding 4×4 window, uniform cubic B-spline blending (seed 003)",
+        scene,
+        view: View {
+            yaw: 0.7,
+            pitch: 0.55,
+            scale: 0.95,
+        },
+    })
+}
+
 type Drawn<DB> = std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
-const SERIES_COLORS: [RGBColor; 3] = [
-    RGBColor(213, 94, 0),
-    RGBColor(0, 114, 178),
-    RGBColor(0, 158, 115),
-];
+const SERIES_COLORS: [RGBColor; 3] = [LINE_PALETTE[1], LINE_PALETTE[0], LINE_PALETTE[2]];
 
 fn draw_convergence<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,

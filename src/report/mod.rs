@@ -1,11 +1,16 @@
-//! The report layer: tables (polars DataFrames), output files and benchmark workloads.
+//! The report layer: tables (polars DataFrames), figures (plotters), output files and
+//! benchmark workloads.
 //!
 //! It depends on the mathematics; the mathematics never depends on it.
 
 pub mod bench;
+pub mod curve_data;
+pub mod curve_figures;
+pub mod curve_tables;
 pub mod figures;
 pub mod notebook;
 pub mod output;
+pub mod plot2d;
 pub mod printed;
 pub mod render3d;
 pub mod style;

@@ -2,6 +2,7 @@
 //! `<dir>/figures/<id>.png` and `.svg`.
 
 use crate::error::{Error, Result};
+use crate::report::curve_tables;
 use crate::report::figures::FigureId;
 use crate::report::style::FIGURE_SIZE;
 use crate::report::tables::{self, Table};
@@ -69,7 +70,7 @@ impl OutputSpec {
     }
 }
 
-const TABLES: [TableSpec; 5] = [
+const TABLES: [TableSpec; 12] = [
     TableSpec {
         id: "torus-partials",
         description: "Exact partials of the torus from hyper-dual numbers beside the closed forms of Codice 3 (seed 000 §2)",
@@ -94,6 +95,41 @@ const TABLES: [TableSpec; 5] = [
         id: "convergence",
         description: "Convergence study n = m = 1…64 with max-abs, RMS, the report's measure and observed orders",
         build: tables::convergence_table,
+    },
+    TableSpec {
+        id: "knot-vectors",
+        description: "Seed 001: knot vectors printed vs constructed (extended partition), open/uniform, basis size",
+        build: curve_tables::knot_vectors,
+    },
+    TableSpec {
+        id: "partition-of-unity",
+        description: "Seed 001: degree 2, knots (0,0,0,1,2,2,2), t = 0.6 — printed vs Cox–de Boor vs one-pass",
+        build: curve_tables::partition_of_unity,
+    },
+    TableSpec {
+        id: "nurbs-circle",
+        description: "Seed 001: radius and curvature error of the 7- and 9-point NURBS circles",
+        build: curve_tables::nurbs_circle,
+    },
+    TableSpec {
+        id: "runge-errors",
+        description: "Seed 001: Runge's phenomenon, max error vs degree, equispaced vs Chebyshev, Vandermonde",
+        build: curve_tables::runge_errors,
+    },
+    TableSpec {
+        id: "cubic-spline-ends",
+        description: "Seeds 001, 004: the four end conditions, residuals, tridiagonal vs collocation",
+        build: curve_tables::cubic_spline_ends,
+    },
+    TableSpec {
+        id: "de-casteljau",
+        description: "Seed 003: de Casteljau at u = 0.3, 0.5, 0.7, recursive vs iterative vs Bernstein",
+        build: curve_tables::de_casteljau_table,
+    },
+    TableSpec {
+        id: "seed003-checks",
+        description: "Seed 003: the printed procedures (setbval, Lagrange B4, bspline, glMap1f) checked",
+        build: curve_tables::seed003_checks,
     },
 ];
 

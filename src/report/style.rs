@@ -55,6 +55,18 @@ pub const PATCH_PALETTE: [RGBColor; 5] = [
     RGBColor(240, 228, 66),
 ];
 
+/// Colours for the series of plane figures, distinguishable by colour-blind readers: the
+/// Okabe–Ito blue, vermillion, bluish green, reddish purple, orange, sky blue, and black.
+pub const LINE_PALETTE: [RGBColor; 7] = [
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+    RGBColor(0, 0, 0),
+];
+
 /// Viridis-like colour map on `[0, 1]` (piecewise linear through five anchors of matplotlib's
 /// viridis), for height shading and error maps.
 pub fn colormap(x: f64) -> RGBColor {

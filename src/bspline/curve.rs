@@ -1,0 +1,259 @@
+//! B-spline curves `C(t) = Σᵢ Pᵢ N_{i,p}(t)` in any dimension (seed 001, "Curva spline").
+
+use crate::bspline::basis::BSplineBasis;
+use crate::error::{finite, Error, Result};
+use crate::horner;
+use nalgebra::SVector;
+use num_dual::{Dual2_64, Dual64, DualNum};
+
+/// A B-spline curve of degree `p` in `ℝᴺ`: `C(t) = Σᵢ Pᵢ N_{i,p}(t)` on the domain
+/// `[t_p, t_{n+1}]` of its basis (seed 001; *The NURBS Book* A3.1).
+///
+/// Generic over the dimension (`N = 1` for spline functions, 2 and 3 for curves) and, in
+/// [`BSplineCurve::eval`], over the number type: at `t + ε` ([`Dual64`]) it gives the tangent,
+/// at a second-order dual number ([`Dual2_64`]) the second derivative, both exact.
+///
+/// The curve is `C^{p−mⱼ}` at a knot of multiplicity `mⱼ` (the slides' `C^{m−mⱼ−1}` with order
+/// `m = p + 1`); moving `Pᵢ` changes it only on `[tᵢ, t_{i+p+1})`.
+///
+/// # Examples
+/// ```
+/// use nalgebra::Vector2;
+/// use splinelab::{BSplineBasis, BSplineCurve, KnotVector};
+/// let basis = BSplineBasis::new(KnotVector::open_uniform(2, 3, 0.0, 1.0).unwrap(), 2);
+/// let pts = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0), Vector2::new(2.0, 0.0)];
+/// let c = BSplineCurve::new(basis, pts);
+/// assert_eq!(c.point(0.5), Vector2::new(1.0, 1.0)); // a quadratic Bézier
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineCurve<const N: usize> {
+    basis: BSplineBasis,
+    points: Vec<SVector<f64, N>>,
+}
+
+/// Checks that every coordinate of every point is finite.
+pub(crate) fn finite_points<const N: usize>(
+    what: &'static str,
+    points: &[SVector<f64, N>],
+) -> Result<()> {
+    for p in points {
+        for &x in p.iter() {
+            finite(what, x)?;
+        }
+    }
+    Ok(())
+}
+
+impl<const N: usize> BSplineCurve<N> {
+    /// The curve with control points `points` on `basis`.
+    ///
+    /// # Panics
+    /// On invalid input; see [`BSplineCurve::try_new`].
+    pub fn new(basis: BSplineBasis, points: Vec<SVector<f64, N>>) -> Self {
+        Self::try_new(basis, points).expect("invalid B-spline curve")
+    }
+
+    /// The curve with control points `points` on `basis`.
+    ///
+    /// # Errors
+    /// [`Error::CountMismatch`] unless there is one control point per basis function
+    /// (knots − order); [`Error::NonFinite`] for a NaN or infinite coordinate.
+    pub fn try_new(basis: BSplineBasis, points: Vec<SVector<f64, N>>) -> Result<Self> {
+        if points.len() != basis.len() {
+            return Err(Error::CountMismatch {
+                what: "control points (knots − order)",
+                expected: basis.len(),
+                got: points.len(),
+            });
+        }
+        finite_points("control point coordinate", &points)?;
+        Ok(Self { basis, points })
+    }
+
+    /// The basis.
+    pub fn basis(&self) -> &BSplineBasis {
+        &self.basis
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[SVector<f64, N>] {
+        &self.points
+    }
+
+    /// The parameter domain `[t_p, t_{n+1}]`.
+    pub fn domain(&self) -> (f64, f64) {
+        self.basis.domain()
+    }
+
+    /// A copy with control point `index` replaced.
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`] for a bad index; [`Error::NonFinite`] for a NaN or infinite
+    /// coordinate.
+    pub fn with_point(&self, index: usize, point: SVector<f64, N>) -> Result<Self> {
+        if index >= self.points.len() {
+            return Err(Error::IndexOutOfRange {
+                what: "control point",
+                index,
+                len: self.points.len(),
+            });
+        }
+        let mut points = self.points.clone();
+        points[index] = point;
+        Self::try_new(self.basis.clone(), points)
+    }
+
+    /// `Σ_{i=ℓ−p}^{ℓ} Pᵢ Nᵢ` for the non-zero basis values `n` of span `ℓ`.
+    fn combine<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, n: &[D]) -> SVector<D, N> {
+        let first = span - self.basis.degree();
+        n.iter()
+            .zip(&self.points[first..=span])
+            .fold(SVector::zeros(), |acc, (&w, p)| acc + p.map(D::from) * w)
+    }
+
+    /// `C(t)` for any number type; outside the domain the end spans are extrapolated (use
+    /// [`BSplineCurve::try_point`] for a checked evaluation).
+    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
+        let (span, n) = self.basis.nonzero(t);
+        self.combine(span, &n)
+    }
+
+    /// `C(t)`.
+    pub fn point(&self, t: f64) -> SVector<f64, N> {
+        self.eval(t)
+    }
+
+    /// `C(t)`, checked.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::OutOfDomain`] outside the
+    /// domain (both ends included).
+    pub fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
+        check_domain("curve parameter", t, self.domain())?;
+        Ok(self.point(t))
+    }
+
+    /// `C′(t)`, exact (one evaluation at the dual number `t + ε`).
+    pub fn derivative(&self, t: f64) -> SVector<f64, N> {
+        self.eval(Dual64::from_re(t).derivative()).map(|d| d.eps)
+    }
+
+    /// `(C(t), C′(t), C″(t))`, exact (one evaluation at a second-order dual number).
+    pub fn derivatives2(&self, t: f64) -> [SVector<f64, N>; 3] {
+        let c = self.eval(Dual2_64::from_re(t).derivative());
+        [c.map(|d| d.re), c.map(|d| d.v1), c.map(|d| d.v2)]
+    }
+
+    /// `C(t)` on span `span` (its polynomial, extended beyond the span), any number type.
+    fn eval_on_span<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, t: D) -> SVector<D, N> {
+        let mut n = vec![D::zero(); self.basis.degree() + 1];
+        self.basis.nonzero_into(span, t, &mut n);
+        self.combine(span, &n)
+    }
+
+    /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
+    /// [`BSplineCurve::eval`]. The span search starts from the previous span, so sorted
+    /// parameters cost a comparison or two each. For degree ≤ 3 each span's polynomial is
+    /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + ε`
+    /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
+    /// degrees evaluate the basis at every point.
+    pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        out.clear();
+        out.reserve(ts.len());
+        let mut cursor = SpanCursor::new(&self.basis);
+        if self.basis.degree() <= horner::TAYLOR_DEGREE {
+            let piece = |c: &SpanCursor| {
+                horner::taylor(&self.eval_on_span(c.span(), horner::seed(c.start())))
+            };
+            let mut coeffs = piece(&cursor);
+            out.extend(ts.iter().map(|&t| {
+                if cursor.advance(t) {
+                    coeffs = piece(&cursor);
+                }
+                horner::eval(&coeffs, t - cursor.start())
+            }));
+        } else {
+            out.extend(ts.iter().map(|&t| {
+                cursor.advance(t);
+                self.eval_on_span(cursor.span(), t)
+            }));
+        }
+    }
+}
+
+/// Curvature of a plane curve from its first two derivatives,
+/// `κ = (x′y″ − y′x″) / (x′² + y′²)^{3/2}` (signed: positive when turning left).
+pub fn signed_curvature(d1: &SVector<f64, 2>, d2: &SVector<f64, 2>) -> f64 {
+    (d1.x * d2.y - d1.y * d2.x) / d1.norm().powi(3)
+}
+
+/// Checks `t` is finite and in `[a, b]`.
+pub(crate) fn check_domain(what: &'static str, t: f64, (a, b): (f64, f64)) -> Result<f64> {
+    finite(what, t)?;
+    if a <= t && t <= b {
+        Ok(t)
+    } else {
+        Err(Error::OutOfDomain {
+            what,
+            value: t,
+            start: a,
+            end: b,
+        })
+    }
+}
+
+/// Walks a sequence of parameters span by span: each search starts from the previous span, so
+/// sorted parameters cost one or two comparisons each; any order stays correct.
+pub(crate) struct SpanCursor<'a> {
+    basis: &'a BSplineBasis,
+    span: usize,
+    lo: f64,
+    hi: f64,
+}
+
+impl<'a> SpanCursor<'a> {
+    /// A cursor on the first span of the domain.
+    pub(crate) fn new(basis: &'a BSplineBasis) -> Self {
+        let mut cursor = Self {
+            basis,
+            span: 0,
+            lo: 0.0,
+            hi: 0.0,
+        };
+        cursor.enter(basis.find_span(basis.domain().0));
+        cursor
+    }
+
+    fn enter(&mut self, span: usize) {
+        let k = self.basis.knots().knots();
+        self.span = span;
+        self.lo = k[span];
+        self.hi = k[span + 1];
+    }
+
+    /// The current span `ℓ`.
+    pub(crate) fn span(&self) -> usize {
+        self.span
+    }
+
+    /// The knot `t_ℓ` where the current span starts.
+    pub(crate) fn start(&self) -> f64 {
+        self.lo
+    }
+
+    /// Moves to the span of `t` (as [`BSplineBasis::find_span`]); `true` if it changed.
+    #[inline]
+    pub(crate) fn advance(&mut self, t: f64) -> bool {
+        // inside the current span's half-open interval: unchanged (the right end b and points
+        // outside the domain go through find_span, which applies the end rules)
+        if self.lo <= t && t < self.hi {
+            return false;
+        }
+        let span = self.basis.find_span(t);
+        let changed = span != self.span;
+        if changed {
+            self.enter(span);
+        }
+        changed
+    }
+}

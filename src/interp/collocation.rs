@@ -1,0 +1,268 @@
+//! Spline interpolation by collocation: solve for the control points of a B-spline so that it
+//! passes through given data (seed 001, "Theorem: spline function interpolation" and "Curve
+//! spline di interpolazione").
+
+use crate::bspline::basis::BSplineBasis;
+use crate::bspline::curve::{finite_points, BSplineCurve};
+use crate::bspline::knots::KnotVector;
+use crate::error::{finite, Error, Result};
+use crate::interp::check_sites;
+use crate::interp::cubic::EndCondition;
+use crate::interp::param::Parametrization;
+use nalgebra::{DMatrix, DVector, SVector};
+use num_dual::Dual2_64;
+
+/// Which derivative a linear condition constrains.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DerivativeOrder {
+    /// `s(x)`.
+    Value,
+    /// `s′(x)`.
+    First,
+    /// `s″(x)`.
+    Second,
+}
+
+/// An extra linear condition `Σₖ cₖ s⁽ʳ⁾(xₖ) = value` on the spline (end conditions such as
+/// `s′(x₀) = y′₀`, or `s″(x₀) − s″(x_n) = 0`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Condition<const N: usize> {
+    /// The derivative order `r`.
+    pub order: DerivativeOrder,
+    /// The terms `(xₖ, cₖ)`.
+    pub terms: Vec<(f64, f64)>,
+    /// The right-hand side.
+    pub value: SVector<f64, N>,
+}
+
+/// Values, first and second derivatives of all basis functions at `x` (exact, from one pass of
+/// the basis evaluator at a second-order dual number).
+fn basis_row(basis: &BSplineBasis, x: f64, order: DerivativeOrder) -> Vec<f64> {
+    basis
+        .all(Dual2_64::from_re(x).derivative())
+        .into_iter()
+        .map(|d| match order {
+            DerivativeOrder::Value => d.re,
+            DerivativeOrder::First => d.v1,
+            DerivativeOrder::Second => d.v2,
+        })
+        .collect()
+}
+
+/// The B-spline on `basis` with `s(xᵢ) = yᵢ` at the sites and the extra `conditions`: the
+/// collocation system `Σⱼ cⱼ Nⱼ(xᵢ) = yᵢ` (plus one row per condition) solved for the control
+/// points `cⱼ`, all coordinates at once (dense LU, O(n³): a reference and a teaching tool).
+///
+/// Without extra conditions this is the slides' theorem (Schoenberg–Whitney): with as many
+/// sites as basis functions, sorted, the system has a unique solution if and only if
+/// `Nⱼ(xⱼ) ≠ 0` for every `j` (each site lies in the support of "its" basis function; de Boor,
+/// *A Practical Guide to Splines*, XIII). That condition is checked first and reported.
+///
+/// # Errors
+/// [`Error::CountMismatch`] unless sites + conditions = basis functions and values match
+/// sites; [`Error::NonFinite`]; [`Error::RepeatedParameter`] / [`Error::NotIncreasing`] for
+/// unsorted sites; [`Error::SchoenbergWhitney`] if the condition fails (no extra conditions);
+/// [`Error::SingularSystem`] if the system is singular.
+pub fn interpolate<const N: usize>(
+    basis: BSplineBasis,
+    sites: &[f64],
+    values: &[SVector<f64, N>],
+    conditions: &[Condition<N>],
+) -> Result<BSplineCurve<N>> {
+    if sites.len() != values.len() {
+        return Err(Error::CountMismatch {
+            what: "values (one per site)",
+            expected: sites.len(),
+            got: values.len(),
+        });
+    }
+    let size = basis.len();
+    if sites.len() + conditions.len() != size {
+        return Err(Error::CountMismatch {
+            what: "sites + conditions (one per basis function)",
+            expected: size,
+            got: sites.len() + conditions.len(),
+        });
+    }
+    check_sites("collocation sites", sites)?;
+    finite_points("collocation value", values)?;
+    for c in conditions {
+        for &(x, w) in &c.terms {
+            finite("condition site", x)?;
+            finite("condition coefficient", w)?;
+        }
+        finite_points("condition value", &[c.value])?;
+    }
+    if conditions.is_empty() {
+        schoenberg_whitney(&basis, sites)?;
+    }
+    let mut a = DMatrix::<f64>::zeros(size, size);
+    let mut rhs: Vec<SVector<f64, N>> = Vec::with_capacity(size);
+    for (i, (&x, y)) in sites.iter().zip(values).enumerate() {
+        a.row_mut(i)
+            .copy_from_slice(&basis_row(&basis, x, DerivativeOrder::Value));
+        rhs.push(*y);
+    }
+    for (k, c) in conditions.iter().enumerate() {
+        let row = sites.len() + k;
+        for &(x, w) in &c.terms {
+            for (j, v) in basis_row(&basis, x, c.order).into_iter().enumerate() {
+                a[(row, j)] += w * v;
+            }
+        }
+        rhs.push(c.value);
+    }
+    let lu = a.lu();
+    let singular = Error::SingularSystem {
+        what: "collocation system",
+    };
+    let mut points = vec![SVector::<f64, N>::zeros(); size];
+    for d in 0..N {
+        let b = DVector::from_fn(size, |i, _| rhs[i][d]);
+        let x = lu.solve(&b).ok_or(singular.clone())?;
+        if x.iter().any(|v| !v.is_finite()) {
+            return Err(singular);
+        }
+        for (p, v) in points.iter_mut().zip(x.iter()) {
+            p[d] = *v;
+        }
+    }
+    BSplineCurve::try_new(basis, points)
+}
+
+/// Checks `Nⱼ(xⱼ) ≠ 0` for every `j` (sorted sites, one per basis function).
+///
+/// # Errors
+/// [`Error::SchoenbergWhitney`] naming the first `j` that fails.
+pub fn schoenberg_whitney(basis: &BSplineBasis, sites: &[f64]) -> Result<()> {
+    let k = basis.knots().knots();
+    for (j, &x) in sites.iter().enumerate() {
+        if basis.all(x)[j] <= 0.0 {
+            return Err(Error::SchoenbergWhitney {
+                index: j,
+                site: x,
+                support_start: k[j],
+                support_end: k[j + basis.degree() + 1],
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The interpolating cubic spline by the B-spline route, independent of the tridiagonal one
+/// of [`crate::CubicSpline`]: knots `x₀` (×4), `x₁ … x_{n−1}`, `x_n` (×4) — the slides'
+/// "nodes of the spline coincide with the interpolation points", leaving two degrees of
+/// freedom — and the two end conditions as extra rows (`s′` or `s″` at the ends from the
+/// exact basis derivatives).
+///
+/// # Errors
+/// As [`interpolate`]; [`Error::TooFewPoints`] below 2 points (3 for periodic and anticyclic);
+/// [`Error::PeriodicEndsMismatch`] for periodic data with `y₀ ≠ y_n`.
+pub fn cubic_spline<const N: usize>(
+    x: &[f64],
+    y: &[SVector<f64, N>],
+    end: EndCondition<N>,
+) -> Result<BSplineCurve<N>> {
+    let needed = match end {
+        EndCondition::Periodic | EndCondition::Anticyclic => 3,
+        _ => 2,
+    };
+    if x.len() < needed {
+        return Err(Error::TooFewPoints {
+            what: "cubic spline data",
+            needed,
+            got: x.len(),
+        });
+    }
+    check_sites("cubic spline abscissae", x)?;
+    let (a, b) = (x[0], x[x.len() - 1]);
+    let mut knots = vec![a; 4];
+    knots.extend_from_slice(&x[1..x.len() - 1]);
+    knots.extend([b; 4]);
+    let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, 3)?;
+    let zero = SVector::<f64, N>::zeros();
+    let link = |order, sign: f64| Condition {
+        order,
+        terms: vec![(a, 1.0), (b, -sign)],
+        value: zero,
+    };
+    let conditions = match end {
+        EndCondition::Clamped { start, end } => vec![
+            Condition {
+                order: DerivativeOrder::First,
+                terms: vec![(a, 1.0)],
+                value: start,
+            },
+            Condition {
+                order: DerivativeOrder::First,
+                terms: vec![(b, 1.0)],
+                value: end,
+            },
+        ],
+        EndCondition::Natural => vec![
+            Condition {
+                order: DerivativeOrder::Second,
+                terms: vec![(a, 1.0)],
+                value: zero,
+            },
+            Condition {
+                order: DerivativeOrder::Second,
+                terms: vec![(b, 1.0)],
+                value: zero,
+            },
+        ],
+        EndCondition::Periodic => {
+            if let (Some(first), Some(last)) = (y.first(), y.last()) {
+                let tol = crate::interp::cubic::PERIODIC_MATCH * first.amax().max(1.0);
+                if (first - last).amax() > tol {
+                    return Err(Error::PeriodicEndsMismatch {
+                        distance: (first - last).norm(),
+                    });
+                }
+            }
+            vec![
+                link(DerivativeOrder::First, 1.0),
+                link(DerivativeOrder::Second, 1.0),
+            ]
+        }
+        EndCondition::Anticyclic => vec![
+            link(DerivativeOrder::First, -1.0),
+            link(DerivativeOrder::Second, -1.0),
+        ],
+    };
+    interpolate(basis, x, y, &conditions)
+}
+
+/// The interpolating B-spline curve of degree `degree` through `points` (seed 001, last
+/// slide: parameters first, then the collocation system for the control points `Q_j`).
+/// Parameters by `param`; clamped knots by averaging, `t_{j+p} = (u_j + … + u_{j+p−1})/p`
+/// (*The NURBS Book* eq. 9.8), which always satisfies the Schoenberg–Whitney condition.
+///
+/// # Errors
+/// [`Error::DegreeTooLow`] for degree 0; [`Error::TooFewPoints`] for fewer than
+/// `degree + 1` points; errors of `param` and of [`interpolate`].
+pub fn interpolate_curve<const N: usize>(
+    points: &[SVector<f64, N>],
+    degree: usize,
+    param: Parametrization,
+) -> Result<BSplineCurve<N>> {
+    if degree == 0 {
+        return Err(Error::DegreeTooLow { min: 1, got: 0 });
+    }
+    if points.len() < degree + 1 {
+        return Err(Error::TooFewPoints {
+            what: "points for the interpolating curve",
+            needed: degree + 1,
+            got: points.len(),
+        });
+    }
+    let u = param.parameters(points)?;
+    let n = points.len() - 1;
+    let mut knots = vec![0.0; degree + 1];
+    for j in 1..=n.saturating_sub(degree) {
+        knots.push(u[j..j + degree].iter().sum::<f64>() / degree as f64);
+    }
+    knots.extend(std::iter::repeat_n(1.0, degree + 1));
+    let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, degree)?;
+    interpolate(basis, &u, points, &[])
+}

@@ -1,0 +1,76 @@
+//! Piecewise linear interpolation (seed 001, "Polinomi a tratti di interpolazione di grado 1").
+
+use crate::bspline::curve::finite_points;
+use crate::error::{Error, Result};
+use crate::interp::check_sites;
+use crate::interp::param::Parametrization;
+use nalgebra::SVector;
+use num_dual::DualNum;
+
+/// The polygon through `(xᵢ, yᵢ)`: `p(x) = yₖ + (x − xₖ)(yₖ₊₁ − yₖ)/(xₖ₊₁ − xₖ)` on
+/// `[xₖ, xₖ₊₁]` (seed 001). Continuous, with a derivative that jumps at the nodes.
+///
+/// # Examples
+/// ```
+/// use nalgebra::Vector1;
+/// use splinelab::PiecewiseLinear;
+/// let p = PiecewiseLinear::try_new(&[0.0, 1.0, 3.0], &[Vector1::new(0.0), Vector1::new(2.0), Vector1::new(0.0)]).unwrap();
+/// assert_eq!(p.point(2.0).x, 1.0);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct PiecewiseLinear<const N: usize> {
+    x: Vec<f64>,
+    y: Vec<SVector<f64, N>>,
+}
+
+impl<const N: usize> PiecewiseLinear<N> {
+    /// The polygon through `(xᵢ, yᵢ)`.
+    ///
+    /// # Errors
+    /// [`Error::CountMismatch`], [`Error::TooFewPoints`] (below 2), [`Error::NonFinite`],
+    /// [`Error::RepeatedParameter`], [`Error::NotIncreasing`].
+    pub fn try_new(x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
+        if x.len() != y.len() {
+            return Err(Error::CountMismatch {
+                what: "values (one per abscissa)",
+                expected: x.len(),
+                got: y.len(),
+            });
+        }
+        if x.len() < 2 {
+            return Err(Error::TooFewPoints {
+                what: "piecewise linear data",
+                needed: 2,
+                got: x.len(),
+            });
+        }
+        check_sites("piecewise linear abscissae", x)?;
+        finite_points("piecewise linear value", y)?;
+        Ok(Self {
+            x: x.to_vec(),
+            y: y.to_vec(),
+        })
+    }
+
+    /// The polygon through `points` at the parameters of `param`.
+    ///
+    /// # Errors
+    /// As [`Parametrization::parameters`].
+    pub fn curve(points: &[SVector<f64, N>], param: Parametrization) -> Result<Self> {
+        let t = param.parameters(points)?;
+        Self::try_new(&t, points)
+    }
+
+    /// `p(x)` for any number type (end pieces extrapolated outside `[x₀, x_n]`).
+    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
+        let inner = &self.x[1..self.x.len() - 1];
+        let k = inner.partition_point(|&node| node <= x.re());
+        let slope = (self.y[k + 1] - self.y[k]) / (self.x[k + 1] - self.x[k]);
+        self.y[k].map(D::from) + slope.map(D::from) * (x - self.x[k])
+    }
+
+    /// `p(x)`.
+    pub fn point(&self, x: f64) -> SVector<f64, N> {
+        self.eval(x)
+    }
+}

@@ -1,0 +1,287 @@
+//! NURBS curves: rational B-splines from weighted control points (seed 001, "Curve NURBS").
+
+use crate::bspline::basis::BSplineBasis;
+use crate::bspline::curve::{check_domain, finite_points, SpanCursor};
+use crate::bspline::knots::KnotVector;
+use crate::error::{Error, Result};
+use crate::horner;
+use nalgebra::{SVector, Vector2};
+use num_dual::{Dual2_64, Dual64, DualNum};
+
+/// A NURBS curve of degree `p` in `ℝᴺ` (seed 001):
+///
+/// `C(t) = Σᵢ wᵢ Pᵢ N_{i,p}(t) / Σᵢ wᵢ N_{i,p}(t)`, weights `wᵢ > 0`,
+///
+/// the perspective projection `(X/W, …)` of the B-spline with homogeneous control points
+/// `(wᵢPᵢ, wᵢ)`. With all weights 1 it is the B-spline curve on the same knots; a weight
+/// `wᵢ` acts only on `[tᵢ, t_{i+p+1})`, pulling the curve towards `Pᵢ` as it grows.
+/// Generic over the number type like [`crate::BSplineCurve`].
+///
+/// # Examples
+/// ```
+/// use nalgebra::Vector2;
+/// use splinelab::NurbsCurve;
+/// let circle = NurbsCurve::circle9(Vector2::new(0.0, 0.0), 2.0).unwrap();
+/// let p = circle.point(0.3);
+/// assert!((p.norm() - 2.0).abs() < 1e-14);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsCurve<const N: usize> {
+    basis: BSplineBasis,
+    points: Vec<SVector<f64, N>>,
+    weights: Vec<f64>,
+}
+
+impl<const N: usize> NurbsCurve<N> {
+    /// The curve with control points `points` and weights `weights` on `basis`.
+    ///
+    /// # Panics
+    /// On invalid input; see [`NurbsCurve::try_new`].
+    pub fn new(basis: BSplineBasis, points: Vec<SVector<f64, N>>, weights: Vec<f64>) -> Self {
+        Self::try_new(basis, points, weights).expect("invalid NURBS curve")
+    }
+
+    /// The curve with control points `points` and weights `weights` on `basis`.
+    ///
+    /// # Errors
+    /// [`Error::CountMismatch`] unless there is one control point and one weight per basis
+    /// function; [`Error::NonPositiveWeight`] for a weight that is not positive and finite;
+    /// [`Error::NonFinite`] for a NaN or infinite coordinate.
+    pub fn try_new(
+        basis: BSplineBasis,
+        points: Vec<SVector<f64, N>>,
+        weights: Vec<f64>,
+    ) -> Result<Self> {
+        for (what, got) in [
+            ("NURBS control points (knots − order)", points.len()),
+            ("NURBS weights (one per control point)", weights.len()),
+        ] {
+            if got != basis.len() {
+                return Err(Error::CountMismatch {
+                    what,
+                    expected: basis.len(),
+                    got,
+                });
+            }
+        }
+        if let Some((index, &value)) = weights
+            .iter()
+            .enumerate()
+            .find(|(_, w)| !(w.is_finite() && **w > 0.0))
+        {
+            return Err(Error::NonPositiveWeight { index, value });
+        }
+        finite_points("NURBS control point coordinate", &points)?;
+        Ok(Self {
+            basis,
+            points,
+            weights,
+        })
+    }
+
+    /// The basis.
+    pub fn basis(&self) -> &BSplineBasis {
+        &self.basis
+    }
+
+    /// The control points.
+    pub fn points(&self) -> &[SVector<f64, N>] {
+        &self.points
+    }
+
+    /// The weights.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The parameter domain.
+    pub fn domain(&self) -> (f64, f64) {
+        self.basis.domain()
+    }
+
+    /// A copy with weight `index` replaced (the slides' "weights as shape parameters").
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`] for a bad index; [`Error::NonPositiveWeight`] unless
+    /// `weight` is positive and finite.
+    pub fn with_weight(&self, index: usize, weight: f64) -> Result<Self> {
+        if index >= self.weights.len() {
+            return Err(Error::IndexOutOfRange {
+                what: "weight",
+                index,
+                len: self.weights.len(),
+            });
+        }
+        let mut weights = self.weights.clone();
+        weights[index] = weight;
+        Self::try_new(self.basis.clone(), self.points.clone(), weights)
+    }
+
+    /// The homogeneous point `(Σ wᵢPᵢNᵢ, Σ wᵢNᵢ)` over the non-zero basis values `n` of span
+    /// `ℓ`: the B-spline of the weighted control points `(wᵢPᵢ, wᵢ)` before projection.
+    fn homogeneous<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        span: usize,
+        n: &[D],
+    ) -> (SVector<D, N>, D) {
+        let first = span - self.basis.degree();
+        n.iter()
+            .zip(&self.points[first..=span])
+            .zip(&self.weights[first..=span])
+            .fold(
+                (SVector::<D, N>::zeros(), D::zero()),
+                |(num, den), ((&b, p), &w)| {
+                    let wb = b * w;
+                    (num + p.map(D::from) * wb, den + wb)
+                },
+            )
+    }
+
+    /// The homogeneous point on span `span` at `t` (its polynomials, extended), any number type.
+    fn homogeneous_on_span<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        span: usize,
+        t: D,
+    ) -> (SVector<D, N>, D) {
+        let mut n = vec![D::zero(); self.basis.degree() + 1];
+        self.basis.nonzero_into(span, t, &mut n);
+        self.homogeneous(span, &n)
+    }
+
+    /// The perspective projection `X / W` of a homogeneous point; `W > 0` since the weights
+    /// are positive and the basis is a partition of unity.
+    fn project<D: DualNum<Primitive = f64> + Copy>(
+        (num, den): (SVector<D, N>, D),
+    ) -> SVector<D, N> {
+        num * den.recip()
+    }
+
+    /// `C(t)` for any number type (end spans extrapolated outside the domain).
+    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
+        let (span, n) = self.basis.nonzero(t);
+        Self::project(self.homogeneous(span, &n))
+    }
+
+    /// `C(t)`.
+    pub fn point(&self, t: f64) -> SVector<f64, N> {
+        self.eval(t)
+    }
+
+    /// `C(t)`, checked.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::OutOfDomain`] outside the
+    /// domain.
+    pub fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
+        check_domain("NURBS parameter", t, self.domain())?;
+        Ok(self.point(t))
+    }
+
+    /// `C′(t)`, exact.
+    pub fn derivative(&self, t: f64) -> SVector<f64, N> {
+        self.eval(Dual64::from_re(t).derivative()).map(|d| d.eps)
+    }
+
+    /// `(C, C′, C″)` at `t`, exact.
+    pub fn derivatives2(&self, t: f64) -> [SVector<f64, N>; 3] {
+        let c = self.eval(Dual2_64::from_re(t).derivative());
+        [c.map(|d| d.re), c.map(|d| d.v1), c.map(|d| d.v2)]
+    }
+
+    /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
+    /// [`NurbsCurve::eval`]. As [`crate::BSplineCurve::eval_many`]: for degree ≤ 3 the
+    /// numerator and denominator polynomials of each span are formed once, exactly (Taylor
+    /// coefficients from a third-order dual number), then each point costs two Horner
+    /// evaluations and a division.
+    pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        out.clear();
+        out.reserve(ts.len());
+        let mut cursor = SpanCursor::new(&self.basis);
+        if self.basis.degree() <= horner::TAYLOR_DEGREE {
+            let piece = |c: &SpanCursor| {
+                let (num, den) = self.homogeneous_on_span(c.span(), horner::seed(c.start()));
+                (
+                    horner::taylor(&num),
+                    horner::taylor(&SVector::<_, 1>::new(den)),
+                )
+            };
+            let mut coeffs = piece(&cursor);
+            out.extend(ts.iter().map(|&t| {
+                if cursor.advance(t) {
+                    coeffs = piece(&cursor);
+                }
+                let h = t - cursor.start();
+                Self::project((horner::eval(&coeffs.0, h), horner::eval(&coeffs.1, h).x))
+            }));
+        } else {
+            out.extend(ts.iter().map(|&t| {
+                cursor.advance(t);
+                Self::project(self.homogeneous_on_span(cursor.span(), t))
+            }));
+        }
+    }
+}
+
+impl NurbsCurve<2> {
+    /// The circle of radius `radius` from 7 control points (seed 001, "Cerchio a 7 punti"):
+    /// an equilateral triangle circumscribing the circle, knots
+    /// `{0,0,0,1/3,1/3,2/3,2/3,1,1,1}`, weights `{1, ½, 1, ½, 1, ½, 1}`.
+    ///
+    /// The control points alternate between the midpoints of the triangle's sides (on the
+    /// circle, weight 1) and its vertices (at distance `2r`, weight `cos 60° = ½`: each
+    /// quadratic arc spans 120°, and a rational quadratic arc of angle `2θ` has middle weight
+    /// `cos θ`; the slides write `cos(120)`, meaning the cosine of half the 120° arc). The
+    /// curve starts at `center + (0, −r)` and runs counter-clockwise.
+    ///
+    /// # Errors
+    /// [`Error::NotPositive`] unless `radius` is positive and finite; [`Error::NonFinite`] for
+    /// a NaN or infinite centre.
+    pub fn circle7(center: Vector2<f64>, radius: f64) -> Result<Self> {
+        Self::regular_circle(center, radius, 3)
+    }
+
+    /// The circle of radius `radius` from 9 control points (seed 001, "Cerchio a 9 punti"): the
+    /// circumscribed square, knots `{0,0,0,¼,¼,½,½,¾,¾,1,1,1}`, weights
+    /// `{1, √2/2, 1, √2/2, …, 1}` (90° arcs, middle weight `cos 45°`). Starts at
+    /// `center + (0, −r)`, counter-clockwise.
+    ///
+    /// # Errors
+    /// As [`NurbsCurve::circle7`].
+    pub fn circle9(center: Vector2<f64>, radius: f64) -> Result<Self> {
+        Self::regular_circle(center, radius, 4)
+    }
+
+    /// The circle as `sides` rational quadratic arcs on the circumscribed regular polygon:
+    /// `2·sides + 1` control points, double interior knots at `k/sides`.
+    fn regular_circle(center: Vector2<f64>, radius: f64, sides: usize) -> Result<Self> {
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(Error::NotPositive {
+                what: "circle radius",
+                value: radius,
+            });
+        }
+        let half = std::f64::consts::PI / sides as f64; // half of each arc's angle
+        let start = -std::f64::consts::FRAC_PI_2;
+        let mut points = Vec::with_capacity(2 * sides + 1);
+        let mut weights = Vec::with_capacity(2 * sides + 1);
+        for k in 0..=2 * sides {
+            let angle = start + k as f64 * half;
+            let dir = Vector2::new(angle.cos(), angle.sin());
+            if k % 2 == 0 {
+                points.push(center + dir * radius); // side midpoint, on the circle
+                weights.push(1.0);
+            } else {
+                points.push(center + dir * (radius / half.cos())); // polygon vertex
+                weights.push(half.cos());
+            }
+        }
+        let mut knots = vec![0.0; 3];
+        for k in 1..sides {
+            let x = k as f64 / sides as f64;
+            knots.extend([x, x]);
+        }
+        knots.extend([1.0; 3]);
+        let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, 2)?;
+        Self::try_new(basis, points, weights)
+    }
+}

@@ -1,0 +1,530 @@
+//! Tables of the lecture seeds 001 and 003 as polars DataFrames, computed from scratch.
+
+use crate::bezier::bernstein::bernstein_sum;
+use crate::bezier::de_casteljau::{de_casteljau, de_casteljau_recursive};
+use crate::blending::functions::{lagrange4, printed_setbval, uniform_bspline4};
+use crate::blending::opengl::{opengl_groups, LastGroup};
+use crate::blending::window::printed_bspline_polyline;
+use crate::bspline::basis::BSplineBasis;
+use crate::bspline::curve::{signed_curvature, BSplineCurve};
+use crate::bspline::knots::{EndKnots, KnotVector};
+use crate::domain::linspace;
+use crate::error::{Error, Result};
+use crate::interp::collocation;
+use crate::interp::cubic::{CubicSpline, EndCondition};
+use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RUNGE_INTERVAL};
+use crate::nurbs::NurbsCurve;
+use crate::report::curve_data as data;
+use crate::report::printed::agrees_to_printed;
+use crate::report::tables::Table;
+use nalgebra::{Vector1, Vector2};
+use polars::prelude::{Column, DataFrame};
+
+fn frame(id: &'static str, columns: Vec<Column>) -> Result<DataFrame> {
+    DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
+        id: id.to_string(),
+        message: e.to_string(),
+    })
+}
+
+fn knot_text(k: &KnotVector) -> String {
+    let parts: Vec<String> = k.knots().iter().map(|x| format!("{x}")).collect();
+    format!("{{{}}}", parts.join(", "))
+}
+
+/// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn knot_vectors() -> Result<Table> {
+    let id = "knot-vectors";
+    let extended = KnotVector::extended_partition(
+        0.0,
+        1.0,
+        &data::EXTENDED_INTERIOR,
+        &data::EXTENDED_MULTIPLICITIES,
+        data::EXTENDED_ORDER,
+        EndKnots::Spaced(data::EXTENDED_SPACING),
+    )?;
+    let rows: Vec<(&str, &str, KnotVector, usize, Option<bool>)> = vec![
+        (
+            "extended partition: [0,1], m = 4, Δ = {1/2, 3/4}, M = {1, 2}, end spacing 1/4",
+            data::EXTENDED_PRINTED,
+            extended.clone(),
+            3,
+            Some(extended.knots() == data::EXTENDED_PRINTED_VALUES),
+        ),
+        (
+            "open, n = 2 (KnotVector::open_uniform(2, 4, 0, 1))",
+            "[0, 0, 0, 1/2, 1, 1, 1]",
+            KnotVector::open_uniform(2, 4, 0.0, 1.0)?,
+            2,
+            None,
+        ),
+        (
+            "basis example n = 1",
+            "(0, 0, 1, 2, 3, 4, 5, 5)",
+            KnotVector::try_new(data::BASIS_N1.to_vec())?,
+            1,
+            None,
+        ),
+        (
+            "basis example n = 2",
+            "(0, 0, 0, 1, 2, 3, 4, 4, 4)",
+            KnotVector::try_new(data::BASIS_N2.to_vec())?,
+            2,
+            None,
+        ),
+        (
+            "cubic curve example (KnotVector::open_uniform(3, 7, 0, 1))",
+            "{0, 0, 0, 0, 1/4, 1/2, 3/4, 1, 1, 1, 1}",
+            KnotVector::open_uniform(3, 7, 0.0, 1.0)?,
+            3,
+            Some(KnotVector::open_uniform(3, 7, 0.0, 1.0)?.knots() == data::LOCALITY_KNOTS),
+        ),
+        (
+            "quadratic curve example (KnotVector::open_uniform(2, 10, 0, 1))",
+            "{0, 0, 0, 1/8, …, 7/8, 1, 1, 1}",
+            KnotVector::open_uniform(2, 10, 0.0, 1.0)?,
+            2,
+            None,
+        ),
+    ];
+    let (mut example, mut printed, mut ours, mut agrees) = (vec![], vec![], vec![], vec![]);
+    let (mut degree, mut open, mut uniform, mut count) = (vec![], vec![], vec![], vec![]);
+    for (name, text, knots, p, same) in rows {
+        example.push(name.to_string());
+        printed.push(text.to_string());
+        ours.push(knot_text(&knots));
+        agrees.push(same);
+        degree.push(p as u32);
+        open.push(knots.is_open(p));
+        uniform.push(knots.is_uniform());
+        count.push(BSplineBasis::try_new(knots, p)?.len() as u32);
+    }
+    Ok(Table {
+        id,
+        title: "Knot vectors of seed 001: printed vs constructed, and their properties".into(),
+        df: frame(
+            id,
+            vec![
+                Column::new("example".into(), example),
+                Column::new("printed".into(), printed),
+                Column::new("ours".into(), ours),
+                Column::new("equal_to_printed".into(), agrees),
+                Column::new("degree".into(), degree),
+                Column::new("open".into(), open),
+                Column::new("uniform".into(), uniform),
+                Column::new("basis_functions".into(), count),
+            ],
+        )?,
+        notes: vec![
+            "equal_to_printed: the constructed knots equal the printed ones exactly (— where the example is given as data, not constructed).".into(),
+            "The slides require only t₁ ≤ … ≤ t_m = a for the extra end knots; spacing 1/4 reproduces the printed Δ* (our reading: the rule is not stated).".into(),
+            "open: first and last knot of multiplicity n + 1 (seed 001 \"aperto\"); uniform: equally spaced distinct knots; basis_functions = knots − order = n + 1 + K.".into(),
+        ],
+    })
+}
+
+/// Seed 001's partition-of-unity example: printed values vs Cox–de Boor vs the one-pass
+/// evaluator.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn partition_of_unity() -> Result<Table> {
+    let id = "partition-of-unity";
+    let basis = BSplineBasis::try_new(
+        KnotVector::try_new(data::UNITY_KNOTS.to_vec())?,
+        data::UNITY_DEGREE,
+    )?;
+    let fast = basis.all(data::UNITY_T);
+    let (mut name, mut printed, mut cox, mut one_pass, mut ok) =
+        (vec![], vec![], vec![], vec![], vec![]);
+    for (i, text) in data::UNITY_PRINTED.iter().enumerate() {
+        let c = basis.cox_de_boor(i, data::UNITY_DEGREE, data::UNITY_T);
+        name.push(format!("N{},2(0.6)", i + 1));
+        printed.push(text.to_string());
+        cox.push(c);
+        one_pass.push(fast[i]);
+        ok.push(agrees_to_printed(text, c) && agrees_to_printed(text, fast[i]));
+    }
+    name.push("sum".into());
+    printed.push("1.0".into());
+    cox.push((0..4).map(|i| basis.cox_de_boor(i, 2, data::UNITY_T)).sum());
+    one_pass.push(fast.iter().sum());
+    ok.push(agrees_to_printed("1.0", fast.iter().sum()));
+    Ok(Table {
+        id,
+        title: "Partition of unity: degree 2, knots (0,0,0,1,2,2,2), t = 0.6 (seed 001)".into(),
+        df: frame(
+            id,
+            vec![
+                Column::new("function".into(), name),
+                Column::new("printed".into(), printed),
+                Column::new("cox_de_boor".into(), cox),
+                Column::new("one_pass".into(), one_pass),
+                Column::new("agrees".into(), ok),
+            ],
+        )?,
+        notes: vec![
+            "cox_de_boor: the recurrence as printed (0/0 = 0); one_pass: all non-zero functions of the span at once (The NURBS Book A2.2). agrees: both round to the printed digits.".into(),
+        ],
+    })
+}
+
+/// Samples of the circle tables.
+pub const CIRCLE_SAMPLES: usize = 10_001;
+
+/// Seed 001's exact circles: radius error of the NURBS, and of the same control points with
+/// unit weights (a B-spline, not a circle).
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn nurbs_circle() -> Result<Table> {
+    let id = "nurbs-circle";
+    let center = Vector2::new(0.5, -0.25);
+    let radius = 2.0;
+    let (mut name, mut points, mut nurbs_err, mut unit_err, mut equiv) =
+        (vec![], vec![], vec![], vec![], vec![]);
+    let mut curvature_err = vec![];
+    for (label, circle) in [
+        ("7 control points", NurbsCurve::circle7(center, radius)?),
+        ("9 control points", NurbsCurve::circle9(center, radius)?),
+    ] {
+        let ts = linspace(0.0, 1.0, CIRCLE_SAMPLES);
+        let unit = NurbsCurve::try_new(
+            circle.basis().clone(),
+            circle.points().to_vec(),
+            vec![1.0; circle.points().len()],
+        )?;
+        let bspline = BSplineCurve::try_new(circle.basis().clone(), circle.points().to_vec())?;
+        let radius_error = |c: &NurbsCurve<2>| {
+            ts.iter()
+                .map(|&t| ((c.point(t) - center).norm() - radius).abs())
+                .fold(0.0, f64::max)
+        };
+        name.push(label);
+        points.push(circle.points().len() as u32);
+        nurbs_err.push(radius_error(&circle));
+        curvature_err.push(
+            ts.iter()
+                .map(|&t| {
+                    let [_, d1, d2] = circle.derivatives2(t);
+                    (signed_curvature(&d1, &d2) * radius - 1.0).abs()
+                })
+                .fold(0.0, f64::max),
+        );
+        unit_err.push(radius_error(&unit));
+        equiv.push(
+            ts.iter()
+                .map(|&t| (unit.point(t) - bspline.point(t)).amax())
+                .fold(0.0, f64::max),
+        );
+    }
+    Ok(Table {
+        id,
+        title: "The exact circle as a NURBS: radius error over 10 001 parameters (seed 001)"
+            .into(),
+        df: frame(
+            id,
+            vec![
+                Column::new("circle".into(), name),
+                Column::new("control_points".into(), points),
+                Column::new("max_radius_error".into(), nurbs_err),
+                Column::new("max_curvature_error".into(), curvature_err),
+                Column::new("max_radius_error_unit_weights".into(), unit_err),
+                Column::new("unit_weights_vs_bspline".into(), equiv),
+            ],
+        )?,
+        notes: vec![
+            "Circle of radius 2 centred at (0.5, −0.25); error = max over t of | ‖C(t) − c‖ − r |.".into(),
+            "max_curvature_error: max |κ(t)·r − 1|, κ from the exact first and second derivatives (second-order dual numbers) — the parametrization is not by arc length, yet the curvature is 1/r everywhere.".into(),
+            "unit_weights: the same control points with every weight 1 — a quadratic B-spline, visibly not a circle; unit_weights_vs_bspline: max |NURBS(w = 1) − B-spline|, the identity of the two.".into(),
+        ],
+    })
+}
+
+/// Seed 001's Runge phenomenon as a table: error vs degree for equispaced and Chebyshev
+/// nodes, and what the Vandermonde route loses.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn runge_errors() -> Result<Table> {
+    let id = "runge-errors";
+    let rows = data::runge_rows()?;
+    let (a, b) = RUNGE_INTERVAL;
+    let samples = linspace(a, b, data::RUNGE_SAMPLES);
+    let mut power_vs_lagrange = Vec::new();
+    for r in &rows {
+        let x = NodeFamily::Equispaced.nodes(a, b, r.degree)?;
+        let y: Vec<f64> = x.iter().map(|&t| runge(t)).collect();
+        let power = PowerPolynomial::interpolate(&x, &y)?;
+        let lagrange = Lagrange::try_new(&x, &y)?;
+        power_vs_lagrange.push(
+            samples
+                .iter()
+                .map(|&t| (power.eval(t) - lagrange.eval(t)).abs())
+                .fold(0.0, f64::max),
+        );
+    }
+    Ok(Table {
+        id,
+        title: "Runge's phenomenon: max |p − f| on [−5, 5] vs degree (seed 001)".into(),
+        df: frame(
+            id,
+            vec![
+                Column::new(
+                    "degree".into(),
+                    rows.iter().map(|r| r.degree as u32).collect::<Vec<_>>(),
+                ),
+                Column::new(
+                    "max_error_equispaced".into(),
+                    rows.iter().map(|r| r.equispaced).collect::<Vec<_>>(),
+                ),
+                Column::new(
+                    "max_error_chebyshev".into(),
+                    rows.iter().map(|r| r.chebyshev).collect::<Vec<_>>(),
+                ),
+                Column::new(
+                    "vandermonde_condition".into(),
+                    rows.iter()
+                        .map(|r| r.vandermonde_condition)
+                        .collect::<Vec<_>>(),
+                ),
+                Column::new("power_basis_vs_lagrange".into(), power_vs_lagrange),
+            ],
+        )?,
+        notes: vec![
+            format!("f(x) = 1/(1+x²); errors over {} equispaced samples of [−5, 5]; interpolants in Lagrange form.", data::RUNGE_SAMPLES),
+            "Equispaced nodes: the error grows with the degree, largest near the ends (seed 001: \"l'errore aumenta all'estremità\"); Chebyshev nodes: it decreases.".into(),
+            "vandermonde_condition: 2-norm condition number of V for the equispaced nodes (— where the smallest singular value is below rounding, σ_min ≤ ε σ_max: V is numerically singular, κ ≳ 4.5e15); power_basis_vs_lagrange: max difference between the Vandermonde-solved power form and the Lagrange form, the digits the power basis loses.".into(),
+        ],
+    })
+}
+
+/// The four end conditions on samples of `sin`: interpolation and end-condition residuals,
+/// and the agreement of the tridiagonal route with the B-spline collocation route.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn cubic_spline_ends() -> Result<Table> {
+    let id = "cubic-spline-ends";
+    let (x, y) = data::spline_ends_data();
+    let yv: Vec<Vector1<f64>> = y.iter().map(|&v| Vector1::new(v)).collect();
+    let fine = linspace(x[0], x[x.len() - 1], 1001);
+    let (mut name, mut interp, mut cond1, mut cond2, mut routes, mut err) =
+        (vec![], vec![], vec![], vec![], vec![], vec![]);
+    for end in data::end_conditions() {
+        let s = CubicSpline::function(&x, &y, end)?;
+        let b = collocation::cubic_spline(&x, &yv, end)?;
+        let [d1a, d2a, d1b, d2b] = s.end_derivatives().map(|v| v.x);
+        let (r1, r2) = match end {
+            EndCondition::Clamped { start, end } => ((d1a - start.x).abs(), (d1b - end.x).abs()),
+            EndCondition::Natural => (d2a.abs(), d2b.abs()),
+            EndCondition::Periodic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
+            EndCondition::Anticyclic => ((d1a + d1b).abs(), (d2a + d2b).abs()),
+        };
+        name.push(end.label());
+        interp.push(
+            x.iter()
+                .zip(&y)
+                .map(|(&t, &v)| (s.value(t) - v).abs())
+                .fold(0.0, f64::max),
+        );
+        cond1.push(r1);
+        cond2.push(r2);
+        routes.push(
+            fine.iter()
+                .map(|&t| (s.value(t) - b.point(t).x).abs())
+                .fold(0.0, f64::max),
+        );
+        err.push(
+            fine.iter()
+                .map(|&t| (s.value(t) - t.sin()).abs())
+                .fold(0.0, f64::max),
+        );
+    }
+    Ok(Table {
+        id,
+        title: "Cubic spline end conditions on 7 samples of sin x, [0, 2π] (seeds 001, 004)"
+            .into(),
+        df: frame(
+            id,
+            vec![
+                Column::new("end_condition".into(), name),
+                Column::new("max_interpolation_residual".into(), interp),
+                Column::new("first_condition_residual".into(), cond1),
+                Column::new("second_condition_residual".into(), cond2),
+                Column::new("tridiagonal_vs_collocation".into(), routes),
+                Column::new("max_error_vs_sin".into(), err),
+            ],
+        )?,
+        notes: vec![
+            "Conditions: clamped s′(x₀) = s′(x_n) = 1 (the true slopes); natural s″ = 0 at both ends; periodic s′, s″ equal at the ends; anticyclic s′(x₀) = −s′(x_n), s″(x₀) = −s″(x_n). Residuals from the exact derivatives (dual numbers) of each end piece.".into(),
+            "tridiagonal_vs_collocation: max difference over 1001 points between the O(n) moment solve and the B-spline collocation system (knots at the data, two condition rows) — two independent formulations.".into(),
+            "Natural and periodic ends give the same spline here: the samples are periodic and sin″ = 0 at both ends, so the natural spline already meets the periodic conditions and, the solution being unique, is the periodic one.".into(),
+            "Anticyclic ends contradict sin on [0, 2π] (whose end slopes are equal), hence its larger error; they suit data such as half a period of a sinusoid (a test checks that case).".into(),
+        ],
+    })
+}
+
+/// Seed 003's de Casteljau examples (`u = 0.3, 0.5, 0.7`): recursive as printed vs iterative
+/// vs Bernstein sum.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn de_casteljau_table() -> Result<Table> {
+    let id = "de-casteljau";
+    let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
+    let (mut us, mut xs, mut ys, mut d_iter, mut d_bern) = (vec![], vec![], vec![], vec![], vec![]);
+    for &u in &data::CASTELJAU_U {
+        let rec = de_casteljau_recursive(&points, u)?;
+        let it = de_casteljau(&points, u)?;
+        let bern = bernstein_sum(&points, u).unwrap_or(rec);
+        us.push(u);
+        xs.push(rec.x);
+        ys.push(rec.y);
+        d_iter.push((rec - it).amax());
+        d_bern.push((rec - bern).amax());
+    }
+    Ok(Table {
+        id,
+        title: "de Casteljau on 4 control points at u = 0.3, 0.5, 0.7 (seed 003)".into(),
+        df: frame(
+            id,
+            vec![
+                Column::new("u".into(), us),
+                Column::new("x".into(), xs),
+                Column::new("y".into(), ys),
+                Column::new("recursive_vs_iterative".into(), d_iter),
+                Column::new("recursive_vs_bernstein".into(), d_bern),
+            ],
+        )?,
+        notes: vec![
+            "x, y: the printed recursive castel; the iterative form (Codice 12 of seed 000) and the Bernstein sum give the same point to rounding.".into(),
+        ],
+    })
+}
+
+/// Seed 003's listings checked: what each printed procedure computes, and where it departs
+/// from its intent.
+///
+/// # Errors
+/// Only on an internal polars failure ([`Error::Table`]).
+pub fn seed003_checks() -> Result<Table> {
+    let id = "seed003-checks";
+    let grid = linspace(0.0, 1.0, 101);
+    let setbval = printed_setbval(6)
+        .iter()
+        .enumerate()
+        .map(|(j, b)| {
+            let f = uniform_bspline4(j as f64 / 6.0);
+            (0..4).map(|i| (b[i] - f[i]).abs()).fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max);
+    // the uniform B-splines on integer knots: on [3, 4), N_{i,3}(3 + u) = b_i(u)
+    let integer = BSplineBasis::try_new(KnotVector::try_new((0..8).map(f64::from).collect())?, 3)?;
+    let cox = grid
+        .iter()
+        .map(|&u| {
+            let b = uniform_bspline4(u);
+            (0..4)
+                .map(|i| (integer.cox_de_boor(i, 3, 3.0 + u) - b[i]).abs())
+                .fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max);
+    let lagrange_unity = linspace(-1.0, 2.0, 301)
+        .iter()
+        .map(|&u| (lagrange4(u).iter().sum::<f64>() - 1.0).abs())
+        .fold(0.0, f64::max);
+    // B₄ with the printed denominator (3)(2)(−1) = −6 at its own node u = 2
+    const PRINTED_B4_DENOMINATOR: f64 = -6.0;
+    let printed_b4 = |u: f64| (u + 1.0) * u * (u - 1.0) / PRINTED_B4_DENOMINATOR;
+    let four = data::four_way_points(7);
+    let casteljau = grid
+        .iter()
+        .map(|&u| {
+            let a = de_casteljau_recursive(&four, u)?;
+            let b = bernstein_sum(&four, u).unwrap_or(a);
+            Ok((a - b).amax())
+        })
+        .collect::<Result<Vec<f64>>>()?
+        .into_iter()
+        .fold(0.0, f64::max);
+    let polyline = printed_bspline_polyline(&four, 6)?;
+    let end_gap = polyline
+        .last()
+        .map_or(0.0, |p| (p - four[four.len() - 1]).norm());
+    let stale = opengl_groups(&four, 5, LastGroup::AsPrinted)?;
+    let last_group = stale.last().map_or(String::new(), |g| {
+        g.iter()
+            .map(|p| {
+                four.iter()
+                    .position(|q| q == p)
+                    .map_or("?".to_string(), |i| format!("P{i}"))
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    });
+    let rows: Vec<(&str, String, &str)> = vec![
+        (
+            "printed setbval (nb = 6, Horner b₂, b₁ = 1 − b₀ − b₂ − b₃) vs the closed forms",
+            format!("{setbval:.3e}"),
+            "max |difference|: the listing computes the uniform cubic B-spline blending",
+        ),
+        (
+            "uniform blending vs Cox–de Boor on integer knots",
+            format!("{cox:.3e}"),
+            "max |b_i(u) − N_{i,3}(3 + u)| on integer knots: the same functions",
+        ),
+        (
+            "Lagrange blending, Σ B_i(u) − 1 on [−1, 2]",
+            format!("{lagrange_unity:.3e}"),
+            "partition of unity with B₄'s denominator (3)(2)(1) = 6",
+        ),
+        (
+            "B₄(2) with the printed denominator (3)(2)(−1)",
+            format!("{}", printed_b4(2.0)),
+            "−1 instead of 1: a sign typo in the notes (printed twice)",
+        ),
+        (
+            "recursive castel vs Bernstein sum, 7 points",
+            format!("{casteljau:.3e}"),
+            "max |difference| over 101 parameters: \"Casteljau\" and \"Bezier\" of the comparison are one curve",
+        ),
+        (
+            "printed bspline polyline: distance from its last vertex to the last point",
+            format!("{end_gap:.3e}"),
+            "make_one samples u = j/nb, j < nb, so u = 1 of the last segment is never drawn",
+        ),
+        (
+            "OpenGL spline as printed, 7 points: control points of the last group",
+            last_group,
+            "glMap1f always reads 5 points; entries beyond the 3 fresh ones are stale from the previous group",
+        ),
+    ];
+    Ok(Table {
+        id,
+        title: "Seed 003's printed procedures, checked".into(),
+        df: frame(
+            id,
+            vec![
+                Column::new(
+                    "check".into(),
+                    rows.iter().map(|r| r.0).collect::<Vec<_>>(),
+                ),
+                Column::new(
+                    "value".into(),
+                    rows.iter().map(|r| r.1.clone()).collect::<Vec<_>>(),
+                ),
+                Column::new(
+                    "meaning".into(),
+                    rows.iter().map(|r| r.2).collect::<Vec<_>>(),
+                ),
+            ],
+        )?,
+        notes: vec![
+            "Every value is computed by running the procedure; the points are those of the four-way figure.".into(),
+        ],
+    })
+}

@@ -1,0 +1,380 @@
+//! Plane figures made of panels of line and point series, drawn with plotters on any backend.
+
+use crate::report::style::{FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// How a series is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Style {
+    /// A solid polyline.
+    Line,
+    /// A dashed polyline.
+    Dashed,
+    /// Filled dots of the given radius (pixels).
+    Points(u32),
+    /// A solid polyline with dots at its vertices (a control polygon).
+    LinePoints(u32),
+}
+
+/// One series of a panel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend text; `None` keeps it out of the legend.
+    pub label: Option<String>,
+    /// The points `(x, y)`.
+    pub points: Vec<(f64, f64)>,
+    /// Colour.
+    pub color: RGBColor,
+    /// Stroke width in pixels.
+    pub width: u32,
+    /// Line, dashes or dots.
+    pub style: Style,
+}
+
+impl Series {
+    /// A solid line of width 2.
+    pub fn line(label: impl Into<String>, points: Vec<(f64, f64)>, color: RGBColor) -> Self {
+        Self {
+            label: Some(label.into()),
+            points,
+            color,
+            width: 2,
+            style: Style::Line,
+        }
+    }
+
+    /// The same series with another style.
+    pub fn styled(mut self, style: Style) -> Self {
+        self.style = style;
+        self
+    }
+
+    /// The same series with another stroke width.
+    pub fn width(mut self, width: u32) -> Self {
+        self.width = width;
+        self
+    }
+
+    /// The same series without a legend entry.
+    pub fn unlabeled(mut self) -> Self {
+        self.label = None;
+        self
+    }
+}
+
+/// One panel: a titled Cartesian chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Panel {
+    /// Panel title.
+    pub title: String,
+    /// x-axis label.
+    pub x_label: String,
+    /// y-axis label.
+    pub y_label: String,
+    /// The series, drawn in order.
+    pub series: Vec<Series>,
+    /// Equal data units per pixel in x and y (MATLAB's `axis equal`), for shapes.
+    pub equal_aspect: bool,
+    /// Fixed x range instead of the data's (padded) extent.
+    pub x_range: Option<(f64, f64)>,
+    /// Fixed y range instead of the data's (padded) extent.
+    pub y_range: Option<(f64, f64)>,
+    /// Where the legend goes.
+    pub legend: SeriesLabelPosition,
+}
+
+impl Panel {
+    /// A panel with the given title and axis labels, no series yet.
+    pub fn new(title: impl Into<String>, x_label: &str, y_label: &str) -> Self {
+        Self {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            series: Vec::new(),
+            equal_aspect: false,
+            x_range: None,
+            y_range: None,
+            legend: SeriesLabelPosition::UpperRight,
+        }
+    }
+
+    /// With equal axis scaling.
+    pub fn equal(mut self) -> Self {
+        self.equal_aspect = true;
+        self
+    }
+
+    /// With the legend at `pos`.
+    pub fn legend_at(mut self, pos: SeriesLabelPosition) -> Self {
+        self.legend = pos;
+        self
+    }
+
+    /// With a fixed y range.
+    pub fn y_range(mut self, lo: f64, hi: f64) -> Self {
+        self.y_range = Some((lo, hi));
+        self
+    }
+
+    /// Adds a series.
+    pub fn with(mut self, series: Series) -> Self {
+        self.series.push(series);
+        self
+    }
+}
+
+/// A figure: a title over panels laid out in `rows × cols`, and an optional legend shared by
+/// all panels in a strip along the bottom (for panels that show the same series).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure2d {
+    /// Figure title.
+    pub title: String,
+    /// Panels, row by row.
+    pub panels: Vec<Panel>,
+    /// `(rows, cols)`.
+    pub layout: (usize, usize),
+    /// Entries `(label, colour, style)` of the shared legend; empty for none (panels then
+    /// carry their own legends).
+    pub legend: Vec<(String, RGBColor, Style)>,
+}
+
+impl Figure2d {
+    /// A figure without a shared legend.
+    pub fn new(title: impl Into<String>, panels: Vec<Panel>, layout: (usize, usize)) -> Self {
+        Self {
+            title: title.into(),
+            panels,
+            layout,
+            legend: Vec::new(),
+        }
+    }
+
+    /// Moves the legend entries of the first panel into a shared strip and drops every
+    /// panel's own legend (for panels showing the same series).
+    pub fn shared_legend(mut self) -> Self {
+        if let Some(first) = self.panels.first() {
+            self.legend = first
+                .series
+                .iter()
+                .filter_map(|s| s.label.clone().map(|l| (l, s.color, s.style)))
+                .collect();
+        }
+        for panel in &mut self.panels {
+            for s in &mut panel.series {
+                s.label = None;
+            }
+        }
+        self
+    }
+}
+
+/// The result of a plotters drawing call.
+pub type Drawn<DB> =
+    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+
+/// Pixel sizes of a panel's decorations, used to predict its plotting area.
+const MARGIN: u32 = 12;
+const X_LABEL_AREA: u32 = 45;
+const Y_LABEL_AREA: u32 = 62;
+const CAPTION: u32 = 30;
+
+/// Height of one row of the shared legend strip, and the room each entry takes.
+const LEGEND_ROW: u32 = 26;
+const LEGEND_SAMPLE: i32 = 24;
+
+impl Figure2d {
+    /// Draws the figure into `area` (already filled with the background).
+    ///
+    /// # Errors
+    /// Whatever the backend reports.
+    pub fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        let body = area.titled(&self.title, (FONT, TITLE_SIZE))?;
+        let body = if self.legend.is_empty() {
+            body
+        } else {
+            let (_, height) = body.dim_in_pixel();
+            let rows = self.legend_rows(body.dim_in_pixel().0);
+            let (panels, strip) =
+                body.split_vertically(height - rows.len() as u32 * LEGEND_ROW - 8);
+            draw_legend_strip(&strip, &rows)?;
+            panels
+        };
+        for (cell, panel) in body.split_evenly(self.layout).iter().zip(&self.panels) {
+            draw_panel(cell, panel)?;
+        }
+        Ok(())
+    }
+
+    /// The legend entries laid out in rows that fit `width` pixels (text width estimated
+    /// from the label size).
+    fn legend_rows(&self, width: u32) -> Vec<Vec<&(String, RGBColor, Style)>> {
+        let mut rows: Vec<Vec<&(String, RGBColor, Style)>> = vec![Vec::new()];
+        let mut used = 0;
+        for entry in &self.legend {
+            let w = entry_width(&entry.0);
+            if used + w > width as i32 - 40 && !rows[rows.len() - 1].is_empty() {
+                rows.push(Vec::new());
+                used = 0;
+            }
+            used += w;
+            let last = rows.len() - 1;
+            rows[last].push(entry);
+        }
+        rows
+    }
+}
+
+/// Pixels an entry of the legend strip takes: sample, gap, text (about 0.55 em per
+/// character), spacing.
+fn entry_width(label: &str) -> i32 {
+    LEGEND_SAMPLE + 8 + (label.chars().count() as f64 * 0.55 * TICK_SIZE as f64) as i32 + 28
+}
+
+fn draw_legend_strip<DB: DrawingBackend>(
+    strip: &DrawingArea<DB, Shift>,
+    rows: &[Vec<&(String, RGBColor, Style)>],
+) -> Drawn<DB> {
+    let font = (FONT, TICK_SIZE).into_font().color(&BLACK);
+    for (r, row) in rows.iter().enumerate() {
+        let total: i32 = row.iter().map(|e| entry_width(&e.0)).sum();
+        let mut x = (strip.dim_in_pixel().0 as i32 - total) / 2;
+        let y = r as i32 * LEGEND_ROW as i32 + LEGEND_ROW as i32 / 2;
+        for (label, color, style) in row.iter().map(|e| (&e.0, e.1, e.2)) {
+            match style {
+                Style::Points(radius) => {
+                    strip.draw(&Circle::new(
+                        (x + LEGEND_SAMPLE / 2, y),
+                        radius.max(3),
+                        color.filled(),
+                    ))?;
+                }
+                Style::Dashed => {
+                    for (a, b) in [(0, 9), (15, LEGEND_SAMPLE)] {
+                        strip.draw(&PathElement::new(
+                            vec![(x + a, y), (x + b, y)],
+                            color.stroke_width(3),
+                        ))?;
+                    }
+                }
+                Style::Line | Style::LinePoints(_) => {
+                    strip.draw(&PathElement::new(
+                        vec![(x, y), (x + LEGEND_SAMPLE, y)],
+                        color.stroke_width(3),
+                    ))?;
+                }
+            }
+            strip.draw(&Text::new(
+                label.clone(),
+                (x + LEGEND_SAMPLE + 8, y - TICK_SIZE as i32 / 2 - 1),
+                font.clone(),
+            ))?;
+            x += entry_width(label);
+        }
+    }
+    Ok(())
+}
+
+/// The extent of all series, padded by 5 % (and by ±1 for a degenerate side).
+fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
+    let pts = panel.series.iter().flat_map(|s| s.points.iter());
+    let (mut x0, mut x1, mut y0, mut y1) = (
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    );
+    for &(x, y) in pts.filter(|(x, y)| x.is_finite() && y.is_finite()) {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    let pad = |lo: f64, hi: f64| {
+        if !(lo.is_finite() && hi.is_finite()) {
+            (0.0, 1.0)
+        } else if hi - lo <= 0.0 {
+            (lo - 1.0, hi + 1.0)
+        } else {
+            let d = 0.05 * (hi - lo);
+            (lo - d, hi + d)
+        }
+    };
+    (
+        panel.x_range.unwrap_or_else(|| pad(x0, x1)),
+        panel.y_range.unwrap_or_else(|| pad(y0, y1)),
+    )
+}
+
+fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Drawn<DB> {
+    let ((mut x0, mut x1), (mut y0, mut y1)) = extent(panel);
+    if panel.equal_aspect {
+        // grow the shorter side so one data unit spans as many pixels in x as in y
+        let (w, h) = area.dim_in_pixel();
+        let pw = w.saturating_sub(Y_LABEL_AREA + 2 * MARGIN).max(1) as f64;
+        let ph = h.saturating_sub(X_LABEL_AREA + CAPTION + 2 * MARGIN).max(1) as f64;
+        let scale = ((x1 - x0) / pw).max((y1 - y0) / ph);
+        let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+        (x0, x1) = (cx - 0.5 * scale * pw, cx + 0.5 * scale * pw);
+        (y0, y1) = (cy - 0.5 * scale * ph, cy + 0.5 * scale * ph);
+    }
+    let mut chart = ChartBuilder::on(area)
+        .caption(&panel.title, (FONT, LABEL_SIZE + 2))
+        .margin(MARGIN)
+        .x_label_area_size(X_LABEL_AREA)
+        .y_label_area_size(Y_LABEL_AREA)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_label.as_str())
+        .y_desc(panel.y_label.as_str())
+        .axis_desc_style((FONT, LABEL_SIZE))
+        .label_style((FONT, TICK_SIZE))
+        .light_line_style(RGBColor(235, 235, 235))
+        .bold_line_style(RGBColor(215, 215, 215))
+        .x_labels(7)
+        .y_labels(7)
+        .draw()?;
+    let mut labelled = false;
+    for s in &panel.series {
+        let color = s.color;
+        let stroke = color.stroke_width(s.width);
+        let pts = s.points.clone();
+        let anno = match s.style {
+            Style::Line => chart.draw_series(LineSeries::new(pts, stroke))?,
+            Style::Dashed => chart.draw_series(DashedLineSeries::new(pts, 9, 6, stroke))?,
+            Style::Points(r) => {
+                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))?
+            }
+            Style::LinePoints(r) => {
+                chart.draw_series(LineSeries::new(pts.clone(), stroke))?;
+                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))?
+            }
+        };
+        if let Some(label) = &s.label {
+            labelled = true;
+            let anno = anno.label(label.as_str());
+            match s.style {
+                Style::Points(r) => {
+                    anno.legend(move |(x, y)| Circle::new((x + 10, y), r.max(3), color.filled()));
+                }
+                _ => {
+                    let width = s.width.max(2);
+                    anno.legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width))
+                    });
+                }
+            }
+        }
+    }
+    if labelled {
+        chart
+            .configure_series_labels()
+            .position(panel.legend.clone())
+            .label_font((FONT, TICK_SIZE))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.4))
+            .draw()?;
+    }
+    Ok(())
+}
