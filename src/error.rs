@@ -261,6 +261,19 @@ pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
     }
 }
 
+/// Checks that every coordinate of every point is finite.
+pub(crate) fn finite_points<const N: usize>(
+    what: &'static str,
+    points: &[nalgebra::SVector<f64, N>],
+) -> Result<()> {
+    for p in points {
+        for &x in p.iter() {
+            finite(what, x)?;
+        }
+    }
+    Ok(())
+}
+
 /// Returns `n` if it is at least 2, else [`Error::TooFewSamples`].
 pub(crate) fn samples(what: &'static str, n: usize) -> Result<usize> {
     if n >= 2 {

@@ -12,8 +12,9 @@
 //!   [`HermiteSpline`] (piecewise surfaces over partitions).
 //! - [`metrics`] and [`study`]: the report's error measure (MATLAB `norm`), max-abs, RMS,
 //!   the §3/§6 experiments and a convergence study.
-//! - [`KnotVector`], [`BSplineBasis`], [`BSplineCurve`], [`NurbsCurve`]: B-splines and NURBS
-//!   (seed 001), generic over dimension and number type.
+//! - [`ParametricCurve`]: a curve written once, generic over the number type, with exact
+//!   derivatives; [`KnotVector`], [`BSplineBasis`], [`BSplineCurve`], [`NurbsCurve`]:
+//!   B-splines and NURBS (seed 001), generic over dimension and number type.
 //! - [`interp`]: polynomial interpolation ([`PowerPolynomial`], [`Lagrange`]), parametrizations,
 //!   [`PiecewiseLinear`], [`CubicSpline`] with clamped, natural, periodic and anticyclic ends,
 //!   B-spline collocation.
@@ -25,6 +26,7 @@
 pub mod bezier;
 pub mod blending;
 pub mod bspline;
+pub mod curve;
 pub mod domain;
 pub mod error;
 pub mod grid;
@@ -47,8 +49,9 @@ pub use bezier::de_casteljau::{
 pub use bezier::patch::BezierPatch;
 pub use blending::functions::{lagrange4, printed_setbval, uniform_bspline4, Blending};
 pub use bspline::basis::BSplineBasis;
-pub use bspline::curve::{signed_curvature, BSplineCurve};
+pub use bspline::curve::BSplineCurve;
 pub use bspline::knots::{EndKnots, KnotVector};
+pub use curve::{signed_curvature, ParametricCurve};
 pub use domain::{Interval, Partition, Rect};
 pub use error::{Error, Result};
 pub use grid::Grid;

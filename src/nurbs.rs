@@ -1,12 +1,13 @@
 //! NURBS curves: rational B-splines from weighted control points (seed 001, "Curve NURBS").
 
 use crate::bspline::basis::BSplineBasis;
-use crate::bspline::curve::{check_domain, finite_points, SpanCursor};
+use crate::bspline::curve::walk_spans;
 use crate::bspline::knots::KnotVector;
-use crate::error::{Error, Result};
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
 use crate::horner;
 use nalgebra::{SVector, Vector2};
-use num_dual::{Dual2_64, Dual64, DualNum};
+use num_dual::DualNum;
 
 /// A NURBS curve of degree `p` in `ℝᴺ` (seed 001):
 ///
@@ -20,7 +21,7 @@ use num_dual::{Dual2_64, Dual64, DualNum};
 /// # Examples
 /// ```
 /// use nalgebra::Vector2;
-/// use splinelab::NurbsCurve;
+/// use splinelab::{NurbsCurve, ParametricCurve};
 /// let circle = NurbsCurve::circle9(Vector2::new(0.0, 0.0), 2.0).unwrap();
 /// let p = circle.point(0.3);
 /// assert!((p.norm() - 2.0).abs() < 1e-14);
@@ -94,11 +95,6 @@ impl<const N: usize> NurbsCurve<N> {
         &self.weights
     }
 
-    /// The parameter domain.
-    pub fn domain(&self) -> (f64, f64) {
-        self.basis.domain()
-    }
-
     /// A copy with weight `index` replaced (the slides' "weights as shape parameters").
     ///
     /// # Errors
@@ -156,69 +152,39 @@ impl<const N: usize> NurbsCurve<N> {
         num * den.recip()
     }
 
-    /// `C(t)` for any number type (end spans extrapolated outside the domain).
-    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
-        let (span, n) = self.basis.nonzero(t);
-        Self::project(self.homogeneous(span, &n))
-    }
-
-    /// `C(t)`.
-    pub fn point(&self, t: f64) -> SVector<f64, N> {
-        self.eval(t)
-    }
-
-    /// `C(t)`, checked.
-    ///
-    /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::OutOfDomain`] outside the
-    /// domain.
-    pub fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
-        check_domain("NURBS parameter", t, self.domain())?;
-        Ok(self.point(t))
-    }
-
-    /// `C′(t)`, exact.
-    pub fn derivative(&self, t: f64) -> SVector<f64, N> {
-        self.eval(Dual64::from_re(t).derivative()).map(|d| d.eps)
-    }
-
-    /// `(C, C′, C″)` at `t`, exact.
-    pub fn derivatives2(&self, t: f64) -> [SVector<f64, N>; 3] {
-        let c = self.eval(Dual2_64::from_re(t).derivative());
-        [c.map(|d| d.re), c.map(|d| d.v1), c.map(|d| d.v2)]
-    }
-
     /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
-    /// [`NurbsCurve::eval`]. As [`crate::BSplineCurve::eval_many`]: for degree ≤ 3 the
+    /// [`ParametricCurve::eval`]. As [`crate::BSplineCurve::eval_many`]: for degree ≤ 3 the
     /// numerator and denominator polynomials of each span are formed once, exactly (Taylor
     /// coefficients from a third-order dual number), then each point costs two Horner
     /// evaluations and a division.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
-        out.clear();
-        out.reserve(ts.len());
-        let mut cursor = SpanCursor::new(&self.basis);
-        if self.basis.degree() <= horner::TAYLOR_DEGREE {
-            let piece = |c: &SpanCursor| {
-                let (num, den) = self.homogeneous_on_span(c.span(), horner::seed(c.start()));
+        walk_spans(
+            &self.basis,
+            ts,
+            out,
+            |span, t0| {
+                let (num, den) = self.homogeneous_on_span(span, horner::seed(t0));
                 (
                     horner::taylor(&num),
                     horner::taylor(&SVector::<_, 1>::new(den)),
                 )
-            };
-            let mut coeffs = piece(&cursor);
-            out.extend(ts.iter().map(|&t| {
-                if cursor.advance(t) {
-                    coeffs = piece(&cursor);
-                }
-                let h = t - cursor.start();
-                Self::project((horner::eval(&coeffs.0, h), horner::eval(&coeffs.1, h).x))
-            }));
-        } else {
-            out.extend(ts.iter().map(|&t| {
-                cursor.advance(t);
-                Self::project(self.homogeneous_on_span(cursor.span(), t))
-            }));
-        }
+            },
+            |(num, den), h| Self::project((horner::eval(num, h), horner::eval(den, h).x)),
+            |span, t| Self::project(self.homogeneous_on_span(span, t)),
+        );
+    }
+}
+
+impl<const N: usize> ParametricCurve<N> for NurbsCurve<N> {
+    /// `Σ wᵢPᵢNᵢ(t) / Σ wᵢNᵢ(t)` over the span of `t` (end spans extrapolated outside the
+    /// domain).
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
+        let (span, n) = self.basis.nonzero(t);
+        Self::project(self.homogeneous(span, &n))
+    }
+
+    fn domain(&self) -> (f64, f64) {
+        self.basis.domain()
     }
 }
 

@@ -13,6 +13,7 @@ use splinelab::report::curve_data as data;
 use splinelab::{
     bernstein_sum, de_casteljau, de_casteljau_levels, de_casteljau_recursive, lagrange4,
     printed_setbval, uniform_bspline4, BSplineBasis, BSplineCurve, Blending, Grid, KnotVector,
+    ParametricCurve,
 };
 
 #[test]
@@ -84,7 +85,7 @@ fn printed_bspline_is_a_uniform_bspline_on_the_padded_points() {
     assert_eq!(q.len(), pts.len() + 5, "first point ×3, last ×4");
     let knots: Vec<f64> = (0..q.len() + 4).map(|k| k as f64).collect();
     let b = BSplineCurve::new(BSplineBasis::new(KnotVector::new(knots), 3), q);
-    let (_, end) = w.parameter_range();
+    let (_, end) = w.domain();
     for k in 0..=400 {
         let s = end * k as f64 / 400.0;
         assert!((w.eval(s) - b.point(3.0 + s)).amax() <= 1e-12, "s = {s}");

@@ -9,7 +9,9 @@ use nalgebra::{Matrix2, Vector2, Vector3};
 use num_dual::Dual3_64;
 use proptest::prelude::*;
 use splinelab::report::curve_data as data;
-use splinelab::{de_casteljau, BSplineBasis, BSplineCurve, EndKnots, KnotVector, NurbsCurve};
+use splinelab::{
+    de_casteljau, BSplineBasis, BSplineCurve, EndKnots, KnotVector, NurbsCurve, ParametricCurve,
+};
 
 /// `|a − b| ≤ tol · max(1, |b|)` with a message.
 #[track_caller]

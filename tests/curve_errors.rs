@@ -7,7 +7,8 @@ use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
 use splinelab::interp::collocation::{interpolate, interpolate_curve};
 use splinelab::{
     de_casteljau_recursive, BSplineBasis, BSplineCurve, CubicSpline, EndCondition, EndKnots, Error,
-    KnotVector, Lagrange, NurbsCurve, Parametrization, PiecewiseLinear, PowerPolynomial,
+    KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization, PiecewiseLinear,
+    PowerPolynomial,
 };
 
 fn v2(x: f64, y: f64) -> Vector2<f64> {

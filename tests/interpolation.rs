@@ -10,8 +10,8 @@ use proptest::prelude::*;
 use splinelab::interp::collocation::{self, interpolate_curve};
 use splinelab::report::curve_data as data;
 use splinelab::{
-    runge, CubicSpline, EndCondition, Lagrange, NodeFamily, Parametrization, PiecewiseLinear,
-    PowerPolynomial,
+    runge, CubicSpline, EndCondition, Lagrange, NodeFamily, ParametricCurve, Parametrization,
+    PiecewiseLinear, PowerPolynomial,
 };
 
 /// The tolerance for end conditions (spec: "end conditions hold to 1e-10").

@@ -6,6 +6,18 @@ use crate::grid::Grid;
 use num_dual::DualNum;
 use std::ops::{Add, Mul};
 
+/// [`Error::TooFewPoints`] unless there are at least `needed` points.
+fn at_least<P>(what: &'static str, points: &[P], needed: usize) -> Result<()> {
+    if points.len() < needed {
+        return Err(Error::TooFewPoints {
+            what,
+            needed,
+            got: points.len(),
+        });
+    }
+    Ok(())
+}
+
 /// Reduces `points` in place by repeated linear interpolation
 /// `Qᵢ ← (1 − u) Qᵢ + u Qᵢ₊₁` (Codice 12) and returns `Q₀ = P(u)`.
 ///
@@ -44,13 +56,7 @@ where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
     D: DualNum<Primitive = f64> + Copy,
 {
-    if points.is_empty() {
-        return Err(Error::TooFewPoints {
-            what: "de Casteljau control points",
-            needed: 1,
-            got: 0,
-        });
-    }
+    at_least("de Casteljau control points", points, 1)?;
     Ok(reduce(&mut points.to_vec(), u))
 }
 
@@ -89,13 +95,7 @@ where
             castel(points, i, level - 1, u) * r + castel(points, i + 1, level - 1, u) * u
         }
     }
-    if points.len() < 2 {
-        return Err(Error::TooFewPoints {
-            what: "recursive de Casteljau control points",
-            needed: 2,
-            got: points.len(),
-        });
-    }
+    at_least("recursive de Casteljau control points", points, 2)?;
     Ok(castel(points, 0, points.len() - 1, u))
 }
 
@@ -110,13 +110,7 @@ where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
     D: DualNum<Primitive = f64> + Copy,
 {
-    if points.is_empty() {
-        return Err(Error::TooFewPoints {
-            what: "de Casteljau control points",
-            needed: 1,
-            got: 0,
-        });
-    }
+    at_least("de Casteljau control points", points, 1)?;
     let r = -u + 1.0;
     let mut levels = vec![points.to_vec()];
     while let Some(last) = levels.last().filter(|l| l.len() > 1) {

@@ -3,7 +3,7 @@
 //! `order − 1` so that groups share their end points.
 
 use crate::bezier::bernstein::bernstein_sum;
-use crate::bspline::curve::finite_points;
+use crate::error::finite_points;
 use crate::error::{Error, Result};
 use nalgebra::SVector;
 

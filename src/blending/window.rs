@@ -2,8 +2,8 @@
 //! window and the printed `bspline` procedure with its end-point repetition.
 
 use crate::blending::functions::{printed_setbval, Blending};
-use crate::bspline::curve::finite_points;
-use crate::error::{Error, Result};
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
 use nalgebra::SVector;
 use num_dual::DualNum;
 
@@ -82,11 +82,13 @@ impl<const N: usize> WindowCurve<N> {
             .zip(&self.window_points[k..k + 4])
             .fold(SVector::zeros(), |acc, (w, q)| acc + q.map(D::from) * w)
     }
+}
 
+impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
     /// The point at the global parameter `s ∈ [0, segments]` (segment `k = ⌊s⌋`, local
     /// `u = s − k`; `s = segments` is the end of the last segment), for any number type.
     /// Outside the range the end segments are extrapolated.
-    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D) -> SVector<D, N> {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D) -> SVector<D, N> {
         let k = (s.re().floor().max(0.0) as usize).min(self.segments - 1);
         let u = s - k as f64;
         match self.blending {
@@ -99,22 +101,9 @@ impl<const N: usize> WindowCurve<N> {
         }
     }
 
-    /// The parameter range `[0, segments]` of [`WindowCurve::eval`].
-    pub fn parameter_range(&self) -> (f64, f64) {
+    /// `[0, segments]`.
+    fn domain(&self) -> (f64, f64) {
         (0.0, self.segments as f64)
-    }
-
-    /// `samples` points evenly spaced in parameter over the whole curve (both ends included).
-    ///
-    /// # Errors
-    /// [`Error::TooFewSamples`] below 2.
-    pub fn polyline(&self, samples: usize) -> Result<Vec<SVector<f64, N>>> {
-        let (a, b) = self.parameter_range();
-        crate::error::samples("polyline samples", samples)?;
-        Ok(crate::domain::linspace(a, b, samples)
-            .into_iter()
-            .map(|s| self.eval(s))
-            .collect())
     }
 }
 

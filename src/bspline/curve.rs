@@ -1,10 +1,11 @@
 //! B-spline curves `C(t) = Σᵢ Pᵢ N_{i,p}(t)` in any dimension (seed 001, "Curva spline").
 
 use crate::bspline::basis::BSplineBasis;
-use crate::error::{finite, Error, Result};
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
 use crate::horner;
 use nalgebra::SVector;
-use num_dual::{Dual2_64, Dual64, DualNum};
+use num_dual::DualNum;
 
 /// A B-spline curve of degree `p` in `ℝᴺ`: `C(t) = Σᵢ Pᵢ N_{i,p}(t)` on the domain
 /// `[t_p, t_{n+1}]` of its basis (seed 001; *The NURBS Book* A3.1).
@@ -19,7 +20,7 @@ use num_dual::{Dual2_64, Dual64, DualNum};
 /// # Examples
 /// ```
 /// use nalgebra::Vector2;
-/// use splinelab::{BSplineBasis, BSplineCurve, KnotVector};
+/// use splinelab::{BSplineBasis, BSplineCurve, KnotVector, ParametricCurve};
 /// let basis = BSplineBasis::new(KnotVector::open_uniform(2, 3, 0.0, 1.0).unwrap(), 2);
 /// let pts = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0), Vector2::new(2.0, 0.0)];
 /// let c = BSplineCurve::new(basis, pts);
@@ -29,19 +30,6 @@ use num_dual::{Dual2_64, Dual64, DualNum};
 pub struct BSplineCurve<const N: usize> {
     basis: BSplineBasis,
     points: Vec<SVector<f64, N>>,
-}
-
-/// Checks that every coordinate of every point is finite.
-pub(crate) fn finite_points<const N: usize>(
-    what: &'static str,
-    points: &[SVector<f64, N>],
-) -> Result<()> {
-    for p in points {
-        for &x in p.iter() {
-            finite(what, x)?;
-        }
-    }
-    Ok(())
 }
 
 impl<const N: usize> BSplineCurve<N> {
@@ -80,11 +68,6 @@ impl<const N: usize> BSplineCurve<N> {
         &self.points
     }
 
-    /// The parameter domain `[t_p, t_{n+1}]`.
-    pub fn domain(&self) -> (f64, f64) {
-        self.basis.domain()
-    }
-
     /// A copy with control point `index` replaced.
     ///
     /// # Errors
@@ -111,39 +94,6 @@ impl<const N: usize> BSplineCurve<N> {
             .fold(SVector::zeros(), |acc, (&w, p)| acc + p.map(D::from) * w)
     }
 
-    /// `C(t)` for any number type; outside the domain the end spans are extrapolated (use
-    /// [`BSplineCurve::try_point`] for a checked evaluation).
-    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
-        let (span, n) = self.basis.nonzero(t);
-        self.combine(span, &n)
-    }
-
-    /// `C(t)`.
-    pub fn point(&self, t: f64) -> SVector<f64, N> {
-        self.eval(t)
-    }
-
-    /// `C(t)`, checked.
-    ///
-    /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::OutOfDomain`] outside the
-    /// domain (both ends included).
-    pub fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
-        check_domain("curve parameter", t, self.domain())?;
-        Ok(self.point(t))
-    }
-
-    /// `C′(t)`, exact (one evaluation at the dual number `t + ε`).
-    pub fn derivative(&self, t: f64) -> SVector<f64, N> {
-        self.eval(Dual64::from_re(t).derivative()).map(|d| d.eps)
-    }
-
-    /// `(C(t), C′(t), C″(t))`, exact (one evaluation at a second-order dual number).
-    pub fn derivatives2(&self, t: f64) -> [SVector<f64, N>; 3] {
-        let c = self.eval(Dual2_64::from_re(t).derivative());
-        [c.map(|d| d.re), c.map(|d| d.v1), c.map(|d| d.v2)]
-    }
-
     /// `C(t)` on span `span` (its polynomial, extended beyond the span), any number type.
     fn eval_on_span<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, t: D) -> SVector<D, N> {
         let mut n = vec![D::zero(); self.basis.degree() + 1];
@@ -152,59 +102,68 @@ impl<const N: usize> BSplineCurve<N> {
     }
 
     /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
-    /// [`BSplineCurve::eval`]. The span search starts from the previous span, so sorted
+    /// [`ParametricCurve::eval`]. The span search starts from the previous span, so sorted
     /// parameters cost a comparison or two each. For degree ≤ 3 each span's polynomial is
     /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + ε`
     /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
     /// degrees evaluate the basis at every point.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
-        out.clear();
-        out.reserve(ts.len());
-        let mut cursor = SpanCursor::new(&self.basis);
-        if self.basis.degree() <= horner::TAYLOR_DEGREE {
-            let piece = |c: &SpanCursor| {
-                horner::taylor(&self.eval_on_span(c.span(), horner::seed(c.start())))
-            };
-            let mut coeffs = piece(&cursor);
-            out.extend(ts.iter().map(|&t| {
-                if cursor.advance(t) {
-                    coeffs = piece(&cursor);
-                }
-                horner::eval(&coeffs, t - cursor.start())
-            }));
-        } else {
-            out.extend(ts.iter().map(|&t| {
-                cursor.advance(t);
-                self.eval_on_span(cursor.span(), t)
-            }));
-        }
+        walk_spans(
+            &self.basis,
+            ts,
+            out,
+            |span, t0| horner::taylor(&self.eval_on_span(span, horner::seed(t0))),
+            horner::eval,
+            |span, t| self.eval_on_span(span, t),
+        );
     }
 }
 
-/// Curvature of a plane curve from its first two derivatives,
-/// `κ = (x′y″ − y′x″) / (x′² + y′²)^{3/2}` (signed: positive when turning left).
-pub fn signed_curvature(d1: &SVector<f64, 2>, d2: &SVector<f64, 2>) -> f64 {
-    (d1.x * d2.y - d1.y * d2.x) / d1.norm().powi(3)
+impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
+    /// `Σ Pᵢ N_{i,p}(t)` over the span of `t` (end spans extrapolated outside the domain).
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> SVector<D, N> {
+        let (span, n) = self.basis.nonzero(t);
+        self.combine(span, &n)
+    }
+
+    fn domain(&self) -> (f64, f64) {
+        self.basis.domain()
+    }
 }
 
-/// Checks `t` is finite and in `[a, b]`.
-pub(crate) fn check_domain(what: &'static str, t: f64, (a, b): (f64, f64)) -> Result<f64> {
-    finite(what, t)?;
-    if a <= t && t <= b {
-        Ok(t)
+/// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
+/// into `out` (cleared first): for degree ≤ 3, `piece(ℓ, t_ℓ)` forms span `ℓ`'s data once
+/// and `at(piece, t − t_ℓ)` evaluates each point; above, `direct(ℓ, t)` evaluates each point.
+pub(crate) fn walk_spans<T, P>(
+    basis: &BSplineBasis,
+    ts: &[f64],
+    out: &mut Vec<T>,
+    piece: impl Fn(usize, f64) -> P,
+    at: impl Fn(&P, f64) -> T,
+    direct: impl Fn(usize, f64) -> T,
+) {
+    out.clear();
+    out.reserve(ts.len());
+    let mut cursor = SpanCursor::new(basis);
+    if basis.degree() <= horner::TAYLOR_DEGREE {
+        let mut data = piece(cursor.span(), cursor.start());
+        out.extend(ts.iter().map(|&t| {
+            if cursor.advance(t) {
+                data = piece(cursor.span(), cursor.start());
+            }
+            at(&data, t - cursor.start())
+        }));
     } else {
-        Err(Error::OutOfDomain {
-            what,
-            value: t,
-            start: a,
-            end: b,
-        })
+        out.extend(ts.iter().map(|&t| {
+            cursor.advance(t);
+            direct(cursor.span(), t)
+        }));
     }
 }
 
 /// Walks a sequence of parameters span by span: each search starts from the previous span, so
 /// sorted parameters cost one or two comparisons each; any order stays correct.
-pub(crate) struct SpanCursor<'a> {
+struct SpanCursor<'a> {
     basis: &'a BSplineBasis,
     span: usize,
     lo: f64,
@@ -213,7 +172,7 @@ pub(crate) struct SpanCursor<'a> {
 
 impl<'a> SpanCursor<'a> {
     /// A cursor on the first span of the domain.
-    pub(crate) fn new(basis: &'a BSplineBasis) -> Self {
+    fn new(basis: &'a BSplineBasis) -> Self {
         let mut cursor = Self {
             basis,
             span: 0,
@@ -232,18 +191,18 @@ impl<'a> SpanCursor<'a> {
     }
 
     /// The current span `ℓ`.
-    pub(crate) fn span(&self) -> usize {
+    fn span(&self) -> usize {
         self.span
     }
 
     /// The knot `t_ℓ` where the current span starts.
-    pub(crate) fn start(&self) -> f64 {
+    fn start(&self) -> f64 {
         self.lo
     }
 
     /// Moves to the span of `t` (as [`BSplineBasis::find_span`]); `true` if it changed.
     #[inline]
-    pub(crate) fn advance(&mut self, t: f64) -> bool {
+    fn advance(&mut self, t: f64) -> bool {
         // inside the current span's half-open interval: unchanged (the right end b and points
         // outside the domain go through find_span, which applies the end rules)
         if self.lo <= t && t < self.hi {

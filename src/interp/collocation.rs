@@ -3,8 +3,9 @@
 //! spline di interpolazione").
 
 use crate::bspline::basis::BSplineBasis;
-use crate::bspline::curve::{finite_points, BSplineCurve};
+use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
+use crate::error::finite_points;
 use crate::error::{finite, Error, Result};
 use crate::interp::check_sites;
 use crate::interp::cubic::EndCondition;

@@ -1,14 +1,14 @@
 //! Interpolating cubic splines with clamped, natural, periodic and anticyclic ends, built in
 //! O(n) (seed 001, "Spline cubiche di interpolazione"; seed 004 §2 for the anticyclic ends).
 
-use crate::bspline::curve::finite_points;
-use crate::error::{Error, Result};
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
 use crate::horner;
 use crate::interp::param::Parametrization;
 use crate::interp::{check_sites, IntervalCursor};
 use crate::tridiagonal::{solve, Row};
 use nalgebra::{SVector, Vector1};
-use num_dual::{Dual2_64, Dual64, DualNum};
+use num_dual::{Dual2_64, DualNum};
 
 /// The two extra conditions that make the interpolating cubic spline unique.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,7 +84,7 @@ pub const PERIODIC_MATCH: f64 = 1e-12;
 ///
 /// # Examples
 /// ```
-/// use splinelab::{CubicSpline, EndCondition};
+/// use splinelab::{CubicSpline, EndCondition, ParametricCurve};
 /// let x = [0.0, 1.0, 2.0, 3.0];
 /// let y = [0.0, 1.0, 0.0, 1.0];
 /// let s = CubicSpline::function(&x, &y, EndCondition::Natural).unwrap();
@@ -179,11 +179,6 @@ impl<const N: usize> CubicSpline<N> {
         &self.end
     }
 
-    /// The domain `[x₀, x_n]`.
-    pub fn domain(&self) -> (f64, f64) {
-        (self.x[0], self.x[self.x.len() - 1])
-    }
-
     /// Index `i` of the interval `[xᵢ, xᵢ₊₁)` holding `x` (the right end belongs to the last;
     /// outside points to the nearest end interval, which is extrapolated).
     fn interval(&self, x: f64) -> usize {
@@ -212,28 +207,6 @@ impl<const N: usize> CubicSpline<N> {
         x: D,
     ) -> SVector<D, N> {
         horner::eval(c, x - self.x[i])
-    }
-
-    /// `s(x)` for any number type: at `x + ε` the derivative comes too, exact.
-    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
-        let i = self.interval(x.re());
-        self.horner(i, &self.piece(i), x)
-    }
-
-    /// `s(x)`.
-    pub fn point(&self, x: f64) -> SVector<f64, N> {
-        self.eval(x)
-    }
-
-    /// `s′(x)`, exact.
-    pub fn derivative(&self, x: f64) -> SVector<f64, N> {
-        self.eval(Dual64::from_re(x).derivative()).map(|d| d.eps)
-    }
-
-    /// `(s, s′, s″)` at `x`, exact.
-    pub fn derivatives2(&self, x: f64) -> [SVector<f64, N>; 3] {
-        let c = self.eval(Dual2_64::from_re(x).derivative());
-        [c.map(|d| d.re), c.map(|d| d.v1), c.map(|d| d.v2)]
     }
 
     /// One-sided derivatives at the ends, `(s′(x₀), s″(x₀), s′(x_n), s″(x_n))`, each from its
@@ -273,6 +246,19 @@ impl<const N: usize> CubicSpline<N> {
         out.clear();
         out.reserve(xs.len());
         self.for_each_value(xs, |v| out.push(v));
+    }
+}
+
+impl<const N: usize> ParametricCurve<N> for CubicSpline<N> {
+    /// `s(x)` for any number type: at `x + ε` the derivative comes too, exact.
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
+        let i = self.interval(x.re());
+        self.horner(i, &self.piece(i), x)
+    }
+
+    /// `[x₀, x_n]`.
+    fn domain(&self) -> (f64, f64) {
+        (self.x[0], self.x[self.x.len() - 1])
     }
 }
 

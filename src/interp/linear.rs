@@ -1,7 +1,7 @@
 //! Piecewise linear interpolation (seed 001, "Polinomi a tratti di interpolazione di grado 1").
 
-use crate::bspline::curve::finite_points;
-use crate::error::{Error, Result};
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
 use crate::interp::check_sites;
 use crate::interp::param::Parametrization;
 use nalgebra::SVector;
@@ -13,7 +13,7 @@ use num_dual::DualNum;
 /// # Examples
 /// ```
 /// use nalgebra::Vector1;
-/// use splinelab::PiecewiseLinear;
+/// use splinelab::{ParametricCurve, PiecewiseLinear};
 /// let p = PiecewiseLinear::try_new(&[0.0, 1.0, 3.0], &[Vector1::new(0.0), Vector1::new(2.0), Vector1::new(0.0)]).unwrap();
 /// assert_eq!(p.point(2.0).x, 1.0);
 /// ```
@@ -60,17 +60,19 @@ impl<const N: usize> PiecewiseLinear<N> {
         let t = param.parameters(points)?;
         Self::try_new(&t, points)
     }
+}
 
+impl<const N: usize> ParametricCurve<N> for PiecewiseLinear<N> {
     /// `p(x)` for any number type (end pieces extrapolated outside `[x₀, x_n]`).
-    pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
         let inner = &self.x[1..self.x.len() - 1];
         let k = inner.partition_point(|&node| node <= x.re());
         let slope = (self.y[k + 1] - self.y[k]) / (self.x[k + 1] - self.x[k]);
         self.y[k].map(D::from) + slope.map(D::from) * (x - self.x[k])
     }
 
-    /// `p(x)`.
-    pub fn point(&self, x: f64) -> SVector<f64, N> {
-        self.eval(x)
+    /// `[x₀, x_n]`.
+    fn domain(&self) -> (f64, f64) {
+        (self.x[0], self.x[self.x.len() - 1])
     }
 }

@@ -1,7 +1,7 @@
 //! Parameter values for interpolating a sequence of points (seed 001, "Calcolo dei nodi di
 //! interpolazione").
 
-use crate::bspline::curve::finite_points;
+use crate::error::finite_points;
 use crate::error::{Error, Result};
 use nalgebra::SVector;
 

@@ -9,6 +9,7 @@ use crate::blending::window::WindowCurve;
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
+use crate::curve::ParametricCurve;
 use crate::domain::linspace;
 use crate::error::Result;
 use crate::interp::cubic::{CubicSpline, EndCondition};
@@ -43,12 +44,9 @@ fn sampled(a: f64, b: f64, f: impl Fn(f64) -> (f64, f64)) -> Vec<(f64, f64)> {
     linspace(a, b, SAMPLES).into_iter().map(f).collect()
 }
 
-fn curve_points(c: &BSplineCurve<2>) -> Vec<(f64, f64)> {
-    let (a, b) = c.domain();
-    sampled(a, b, |t| {
-        let p = c.point(t);
-        (p.x, p.y)
-    })
+/// Any plane curve sampled at `SAMPLES` parameters over its domain.
+fn trace<C: ParametricCurve<2>>(c: &C) -> Result<Vec<(f64, f64)>> {
+    Ok(xy(&c.polyline(SAMPLES)?))
 }
 
 /// Seed 001: the B-spline bases of degree 1 on `(0,0,1,2,3,4,5,5)` and degree 2 on
@@ -103,9 +101,9 @@ pub fn bspline_locality() -> Result<Figure2d> {
         .equal()
         .legend_at(SeriesLabelPosition::UpperLeft)
         .with(polygon("control polygon", curve.points()))
-        .with(Series::line("C(t)", curve_points(&curve), C[0]).width(3))
+        .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
         .with(
-            Series::line("after moving P₄", curve_points(&moved), C[1])
+            Series::line("after moving P₄", trace(&moved)?, C[1])
                 .styled(Style::Dashed)
                 .width(3),
         )
@@ -150,7 +148,7 @@ pub fn bspline_quadratic() -> Result<Figure2d> {
         .equal()
         .legend_at(SeriesLabelPosition::LowerRight)
         .with(polygon("control polygon", curve.points()))
-        .with(Series::line("C(t)", curve_points(&curve), C[0]).width(3))
+        .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
         .with(Series::line("C(k/8): segment joints", xy(&knots), C[1]).styled(Style::Points(5)));
     Ok(Figure2d::new(
         "Quadratic B-spline curve, knots {0,0,0,1/8,…,7/8,1,1,1} (seed 001)",
@@ -172,10 +170,6 @@ pub fn nurbs_circles() -> Result<Figure2d> {
             NurbsCurve::circle9(Vector2::zeros(), 1.0)?,
         ),
     ] {
-        let pts = sampled(0.0, 1.0, |t| {
-            let p = circle.point(t);
-            (p.x, p.y)
-        });
         let unit = BSplineCurve::try_new(circle.basis().clone(), circle.points().to_vec())?;
         panels.push(
             Panel::new(name, "x", "y")
@@ -183,10 +177,10 @@ pub fn nurbs_circles() -> Result<Figure2d> {
                 .legend_at(SeriesLabelPosition::LowerRight)
                 .with(polygon("control polygon", circle.points()))
                 .with(
-                    Series::line("same points, all weights 1", curve_points(&unit), C[1])
+                    Series::line("same points, all weights 1", trace(&unit)?, C[1])
                         .styled(Style::Dashed),
                 )
-                .with(Series::line("NURBS", pts, C[0]).width(3)),
+                .with(Series::line("NURBS", trace(&circle)?, C[0]).width(3)),
         );
     }
     Ok(Figure2d::new(
@@ -210,11 +204,7 @@ pub fn nurbs_weights() -> Result<Figure2d> {
     .with(polygon("control polygon", base.points()));
     for (k, &w) in data::WEIGHTS.iter().enumerate() {
         let c = base.with_weight(data::WEIGHT_INDEX, w)?;
-        let pts = sampled(0.0, 1.0, |t| {
-            let p = c.point(t);
-            (p.x, p.y)
-        });
-        panel = panel.with(Series::line(format!("w = {w}"), pts, C[k % C.len()]));
+        panel = panel.with(Series::line(format!("w = {w}"), trace(&c)?, C[k % C.len()]));
     }
     Ok(Figure2d::new(
         "NURBS: a weight pulls the curve towards its control point (seed 001)",
@@ -295,11 +285,7 @@ pub fn parametrizations() -> Result<Figure2d> {
     .with(Series::line("data", xy(&points), BLACK).styled(Style::Points(6)));
     for (k, param) in Parametrization::ALL.into_iter().enumerate() {
         let s = CubicSpline::curve(&points, param, EndCondition::Natural)?;
-        let pts = sampled(0.0, 1.0, |t| {
-            let p = s.point(t);
-            (p.x, p.y)
-        });
-        panel = panel.with(Series::line(param.label(), pts, C[k]).width(3));
+        panel = panel.with(Series::line(param.label(), trace(&s)?, C[k]).width(3));
     }
     Ok(Figure2d::new(
         "Parametrization of interpolation points (seed 001)",
@@ -435,21 +421,14 @@ pub fn blending_functions() -> Result<Figure2d> {
 /// (approximating) on the same points.
 pub fn blending_curves() -> Result<Figure2d> {
     let points = data::four_way_points(7);
-    let lagrange = WindowCurve::lagrange(&points)?.polyline(SAMPLES)?;
-    let bspline = WindowCurve::printed_bspline(&points)?.polyline(SAMPLES)?;
+    let lagrange = trace(&WindowCurve::lagrange(&points)?)?;
+    let bspline = trace(&WindowCurve::printed_bspline(&points)?)?;
     let panel = Panel::new("7 data points", "x", "y")
         .equal()
         .legend_at(SeriesLabelPosition::LowerRight)
         .with(polygon("data / control points", &points))
-        .with(
-            Series::line(
-                "Lagrange 4-point window (interpolates)",
-                xy(&lagrange),
-                C[0],
-            )
-            .width(3),
-        )
-        .with(Series::line("bspline procedure (approximates)", xy(&bspline), C[1]).width(3));
+        .with(Series::line("Lagrange 4-point window (interpolates)", lagrange, C[0]).width(3))
+        .with(Series::line("bspline procedure (approximates)", bspline, C[1]).width(3));
     Ok(Figure2d::new(
         "Sliding 4-point windows: Lagrange vs uniform cubic B-spline (seed 003)",
         vec![panel],
@@ -462,7 +441,7 @@ pub fn four_way() -> Result<Figure2d> {
     let mut panels = Vec::new();
     for count in [6, 7] {
         let points = data::four_way_points(count);
-        let cubic = WindowCurve::printed_bspline(&points)?.polyline(SAMPLES)?;
+        let cubic = trace(&WindowCurve::printed_bspline(&points)?)?;
         let opengl = opengl_polyline(&points, 5, 60, LastGroup::Truncated)?;
         let casteljau: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
             .into_iter()
@@ -477,7 +456,7 @@ pub fn four_way() -> Result<Figure2d> {
                 .equal()
                 .legend_at(SeriesLabelPosition::LowerRight)
                 .with(polygon("control points", &points))
-                .with(Series::line("cubic spline (bspline procedure)", xy(&cubic), C[0]).width(3))
+                .with(Series::line("cubic spline (bspline procedure)", cubic, C[0]).width(3))
                 .with(Series::line("OpenGL spline (order 5)", xy(&opengl), C[1]).width(3))
                 .with(Series::line("Casteljau", xy(&casteljau), C[2]).width(5))
                 .with(
