@@ -109,6 +109,7 @@ fn basis_derivatives_three_ways() {
     for _ in 0..200 {
         let t = rng.uniform(0.0, 1.0);
         let dual = basis.all(num_dual::Dual64::from_re(t).derivative());
+        let (span, jet) = basis.nonzero_derivatives(t);
         for i in 0..basis.len() {
             let term = |j: usize, d: f64| {
                 if d > 0.0 {
@@ -120,6 +121,17 @@ fn basis_derivatives_three_ways() {
             let closed =
                 term(i, knots[i + p] - knots[i]) - term(i + 1, knots[i + p + 1] - knots[i + 1]);
             assert_near(dual[i].eps, closed, EXACT, &format!("N′{i}({t})"));
+            let one_pass = if (span - p..=span).contains(&i) {
+                jet[i + p - span][1]
+            } else {
+                0.0
+            };
+            assert_near(
+                one_pass,
+                closed,
+                EXACT,
+                &format!("nonzero_derivatives N′{i}({t})"),
+            );
             // away from knots, where N′ is continuous
             if knots.iter().all(|k| (k - t).abs() > 10.0 * FD_STEP) {
                 let fd = (basis.all(t + FD_STEP)[i] - basis.all(t - FD_STEP)[i]) / (2.0 * FD_STEP);

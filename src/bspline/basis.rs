@@ -3,7 +3,7 @@
 
 use crate::bspline::knots::KnotVector;
 use crate::error::{Error, Result};
-use num_dual::DualNum;
+use num_dual::{Dual2_64, DualNum};
 
 /// The normalised B-spline basis `{N_{i,p}}`, `i = 0 … n`, of degree `p` (order `m = p + 1`) on a
 /// knot vector `t₀ ≤ … ≤ t_{n+p+1}` (0-based; the slides count from 1).
@@ -158,6 +158,25 @@ impl BSplineBasis {
         let mut out = vec![D::zero(); self.degree + 1];
         self.nonzero_into(span, t, &mut out);
         (span, out)
+    }
+
+    /// The span holding `t` and, for each of the `p + 1` basis functions that may be non-zero
+    /// there, `[N(t), N′(t), N″(t)]` — one pass of [`BSplineBasis::nonzero_into`] at the
+    /// second-order dual number `t + ε`, so the derivatives are exact (no difference quotient,
+    /// no separate derivative recurrence).
+    ///
+    /// # Examples
+    /// ```
+    /// use splinelab::{BSplineBasis, KnotVector};
+    /// // linear B-splines on (0,0,1,2,2): at t = 0.5 the slopes are −1 and +1
+    /// let basis = BSplineBasis::new(KnotVector::new(vec![0., 0., 1., 2., 2.]), 1);
+    /// let (span, d) = basis.nonzero_derivatives(0.5);
+    /// assert_eq!(span, 1);
+    /// assert_eq!(d, vec![[0.5, -1.0, 0.0], [0.5, 1.0, 0.0]]);
+    /// ```
+    pub fn nonzero_derivatives(&self, t: f64) -> (usize, Vec<[f64; 3]>) {
+        let (span, n) = self.nonzero(Dual2_64::from_re(t).derivative());
+        (span, n.into_iter().map(|d| [d.re, d.v1, d.v2]).collect())
     }
 
     /// All `n + 1` basis functions at `t` (zeros outside the span), by the one-pass evaluator.

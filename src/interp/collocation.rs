@@ -11,7 +11,6 @@ use crate::interp::check_sites;
 use crate::interp::cubic::EndCondition;
 use crate::interp::param::Parametrization;
 use nalgebra::{DMatrix, DVector, SVector};
-use num_dual::Dual2_64;
 
 /// Which derivative a linear condition constrains.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -36,18 +35,20 @@ pub struct Condition<const N: usize> {
     pub value: SVector<f64, N>,
 }
 
-/// Values, first and second derivatives of all basis functions at `x` (exact, from one pass of
-/// the basis evaluator at a second-order dual number).
+/// The value, first or second derivative of every basis function at `x` (zeros outside the
+/// span), exact ([`BSplineBasis::nonzero_derivatives`]).
 fn basis_row(basis: &BSplineBasis, x: f64, order: DerivativeOrder) -> Vec<f64> {
-    basis
-        .all(Dual2_64::from_re(x).derivative())
-        .into_iter()
-        .map(|d| match order {
-            DerivativeOrder::Value => d.re,
-            DerivativeOrder::First => d.v1,
-            DerivativeOrder::Second => d.v2,
-        })
-        .collect()
+    let k = match order {
+        DerivativeOrder::Value => 0,
+        DerivativeOrder::First => 1,
+        DerivativeOrder::Second => 2,
+    };
+    let (span, d) = basis.nonzero_derivatives(x);
+    let mut row = vec![0.0; basis.len()];
+    for (slot, v) in row[span - basis.degree()..=span].iter_mut().zip(d) {
+        *slot = v[k];
+    }
+    row
 }
 
 /// The B-spline on `basis` with `s(xᵢ) = yᵢ` at the sites and the extra `conditions`: the

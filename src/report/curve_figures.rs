@@ -63,7 +63,7 @@ pub fn bspline_bases() -> Result<Figure2d> {
             "t",
             "N_i,n(t)",
         )
-        .y_range(-0.05, 1.75)
+        .y_range(-0.05, 2.1)
         .legend_at(SeriesLabelPosition::UpperMiddle);
         for i in 0..basis.len() {
             let pts = ts.iter().zip(&values).map(|(&t, v)| (t, v[i])).collect();
