@@ -246,6 +246,14 @@ impl KnotVector {
     }
 }
 
+impl std::fmt::Display for KnotVector {
+    /// `{t₀, t₁, …, t_L}` with each knot in Rust's shortest round-trip form.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let parts: Vec<String> = self.knots.iter().map(|k| format!("{k}")).collect();
+        write!(f, "{{{}}}", parts.join(", "))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,7 +8,7 @@ use crate::bspline::knots::KnotVector;
 use crate::error::finite_points;
 use crate::error::{finite, Error, Result};
 use crate::interp::check_sites;
-use crate::interp::cubic::EndCondition;
+use crate::interp::cubic::{check_spline_data, EndCondition};
 use crate::interp::param::Parametrization;
 use nalgebra::{DMatrix, DVector, SVector};
 
@@ -165,18 +165,7 @@ pub fn cubic_spline<const N: usize>(
     y: &[SVector<f64, N>],
     end: EndCondition<N>,
 ) -> Result<BSplineCurve<N>> {
-    let needed = match end {
-        EndCondition::Periodic | EndCondition::Anticyclic => 3,
-        _ => 2,
-    };
-    if x.len() < needed {
-        return Err(Error::TooFewPoints {
-            what: "cubic spline data",
-            needed,
-            got: x.len(),
-        });
-    }
-    check_sites("cubic spline abscissae", x)?;
+    check_spline_data(x, y, &end)?;
     let (a, b) = (x[0], x[x.len() - 1]);
     let mut knots = vec![a; 4];
     knots.extend_from_slice(&x[1..x.len() - 1]);
@@ -213,20 +202,10 @@ pub fn cubic_spline<const N: usize>(
                 value: zero,
             },
         ],
-        EndCondition::Periodic => {
-            if let (Some(first), Some(last)) = (y.first(), y.last()) {
-                let tol = crate::interp::cubic::PERIODIC_MATCH * first.amax().max(1.0);
-                if (first - last).amax() > tol {
-                    return Err(Error::PeriodicEndsMismatch {
-                        distance: (first - last).norm(),
-                    });
-                }
-            }
-            vec![
-                link(DerivativeOrder::First, 1.0),
-                link(DerivativeOrder::Second, 1.0),
-            ]
-        }
+        EndCondition::Periodic => vec![
+            link(DerivativeOrder::First, 1.0),
+            link(DerivativeOrder::Second, 1.0),
+        ],
         EndCondition::Anticyclic => vec![
             link(DerivativeOrder::First, -1.0),
             link(DerivativeOrder::Second, -1.0),

@@ -114,35 +114,10 @@ impl<const N: usize> CubicSpline<N> {
 
     /// [`CubicSpline::try_new`] taking ownership of the values.
     fn build(x: &[f64], mut y: Vec<SVector<f64, N>>, end: EndCondition<N>) -> Result<Self> {
-        if x.len() != y.len() {
-            return Err(Error::CountMismatch {
-                what: "values (one per abscissa)",
-                expected: x.len(),
-                got: y.len(),
-            });
-        }
-        if x.len() < end.min_points() {
-            return Err(Error::TooFewPoints {
-                what: "cubic spline data",
-                needed: end.min_points(),
-                got: x.len(),
-            });
-        }
-        check_sites("cubic spline abscissae", x)?;
-        finite_points("cubic spline value", &y)?;
-        if let EndCondition::Clamped { start, end } = &end {
-            finite_points("clamped end derivative", &[*start, *end])?;
-        }
+        check_spline_data(x, &y, &end)?;
         let n = x.len() - 1;
         if let EndCondition::Periodic = end {
-            let (first, last) = (y[0], y[n]);
-            let tol = PERIODIC_MATCH * first.amax().max(1.0);
-            if (first - last).amax() > tol {
-                return Err(Error::PeriodicEndsMismatch {
-                    distance: (first - last).norm(),
-                });
-            }
-            y[n] = first;
+            y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
         let m = moments(x, &y, &end)?;
         Ok(Self {
@@ -287,6 +262,51 @@ impl CubicSpline<1> {
         out.clear();
         out.reserve(xs.len());
         self.for_each_value(xs, |v| out.push(v.x));
+    }
+}
+
+/// The checks every interpolating cubic spline makes of its data, whatever the route:
+/// one value per abscissa, enough points for `end`, strictly increasing finite abscissae,
+/// finite values and end derivatives, and for periodic ends `y₀ = y_n` within
+/// [`PERIODIC_MATCH`].
+///
+/// # Errors
+/// As [`CubicSpline::try_new`].
+pub(crate) fn check_spline_data<const N: usize>(
+    x: &[f64],
+    y: &[SVector<f64, N>],
+    end: &EndCondition<N>,
+) -> Result<()> {
+    if x.len() != y.len() {
+        return Err(Error::CountMismatch {
+            what: "values (one per abscissa)",
+            expected: x.len(),
+            got: y.len(),
+        });
+    }
+    if x.len() < end.min_points() {
+        return Err(Error::TooFewPoints {
+            what: "cubic spline data",
+            needed: end.min_points(),
+            got: x.len(),
+        });
+    }
+    check_sites("cubic spline abscissae", x)?;
+    finite_points("cubic spline value", y)?;
+    match end {
+        EndCondition::Clamped { start, end } => {
+            finite_points("clamped end derivative", &[*start, *end])
+        }
+        EndCondition::Periodic => {
+            let (first, last) = (y[0], y[y.len() - 1]);
+            if (first - last).amax() > PERIODIC_MATCH * first.amax().max(1.0) {
+                return Err(Error::PeriodicEndsMismatch {
+                    distance: (first - last).norm(),
+                });
+            }
+            Ok(())
+        }
+        EndCondition::Natural | EndCondition::Anticyclic => Ok(()),
     }
 }
 

@@ -54,12 +54,12 @@ fn trace<C: ParametricCurve<2>>(c: &C) -> Result<Vec<(f64, f64)>> {
 pub fn bspline_bases() -> Result<Figure2d> {
     let mut panels = Vec::new();
     for (degree, knots) in [(1, data::BASIS_N1.to_vec()), (2, data::BASIS_N2.to_vec())] {
-        let basis = BSplineBasis::try_new(KnotVector::try_new(knots.clone())?, degree)?;
+        let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, degree)?;
         let (a, b) = basis.domain();
         let ts = linspace(a, b, SAMPLES);
         let values: Vec<Vec<f64>> = ts.iter().map(|&t| basis.all(t)).collect();
         let mut panel = Panel::new(
-            format!("degree n = {degree}, knots {}", knot_text(&knots)),
+            format!("degree n = {degree}, knots {}", basis.knots()),
             "t",
             "N_i,n(t)",
         )
@@ -80,11 +80,6 @@ pub fn bspline_bases() -> Result<Figure2d> {
         panels,
         (2, 1),
     ))
-}
-
-fn knot_text(knots: &[f64]) -> String {
-    let parts: Vec<String> = knots.iter().map(|k| format!("{k}")).collect();
-    format!("({})", parts.join(","))
 }
 
 /// Seed 001: moving `P₄` of the cubic on `{0,0,0,0,¼,½,¾,1,1,1,1}` changes the curve only

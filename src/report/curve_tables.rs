@@ -10,28 +10,16 @@ use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::{EndKnots, KnotVector};
 use crate::curve::{signed_curvature, ParametricCurve};
 use crate::domain::linspace;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::interp::collocation;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
 use crate::report::curve_data as data;
 use crate::report::printed::agrees_to_printed;
-use crate::report::tables::Table;
+use crate::report::tables::{frame, Table};
 use nalgebra::{Vector1, Vector2};
-use polars::prelude::{Column, DataFrame};
-
-fn frame(id: &'static str, columns: Vec<Column>) -> Result<DataFrame> {
-    DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
-        id: id.to_string(),
-        message: e.to_string(),
-    })
-}
-
-fn knot_text(k: &KnotVector) -> String {
-    let parts: Vec<String> = k.knots().iter().map(|x| format!("{x}")).collect();
-    format!("{{{}}}", parts.join(", "))
-}
+use polars::prelude::Column;
 
 /// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
 ///
@@ -96,7 +84,7 @@ pub fn knot_vectors() -> Result<Table> {
     for (name, text, knots, p, same) in rows {
         example.push(name.to_string());
         printed.push(text.to_string());
-        ours.push(knot_text(&knots));
+        ours.push(knots.to_string());
         agrees.push(same);
         degree.push(p as u32);
         open.push(knots.is_open(p));

@@ -27,7 +27,8 @@ pub struct Table {
 
 const COORDS: [&str; 3] = ["x", "y", "z"];
 
-fn frame(id: &'static str, columns: Vec<Column>) -> Result<DataFrame> {
+/// A DataFrame from columns, polars errors as [`Error::Table`] naming the table.
+pub(crate) fn frame(id: &'static str, columns: Vec<Column>) -> Result<DataFrame> {
     DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
         id: id.to_string(),
         message: e.to_string(),
