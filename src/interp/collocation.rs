@@ -171,45 +171,25 @@ pub fn cubic_spline<const N: usize>(
     knots.extend_from_slice(&x[1..x.len() - 1]);
     knots.extend([b; 4]);
     let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, 3)?;
+    use DerivativeOrder::{First, Second};
     let zero = SVector::<f64, N>::zeros();
-    let link = |order, sign: f64| Condition {
+    // s⁽ʳ⁾(at) = value at one end
+    let at = |order, at: f64, value| Condition {
         order,
-        terms: vec![(a, 1.0), (b, -sign)],
+        terms: vec![(at, 1.0)],
+        value,
+    };
+    // s⁽ʳ⁾(a) − σ s⁽ʳ⁾(b) = 0: σ = +1 periodic, −1 anticyclic
+    let link = |order, sigma: f64| Condition {
+        order,
+        terms: vec![(a, 1.0), (b, -sigma)],
         value: zero,
     };
     let conditions = match end {
-        EndCondition::Clamped { start, end } => vec![
-            Condition {
-                order: DerivativeOrder::First,
-                terms: vec![(a, 1.0)],
-                value: start,
-            },
-            Condition {
-                order: DerivativeOrder::First,
-                terms: vec![(b, 1.0)],
-                value: end,
-            },
-        ],
-        EndCondition::Natural => vec![
-            Condition {
-                order: DerivativeOrder::Second,
-                terms: vec![(a, 1.0)],
-                value: zero,
-            },
-            Condition {
-                order: DerivativeOrder::Second,
-                terms: vec![(b, 1.0)],
-                value: zero,
-            },
-        ],
-        EndCondition::Periodic => vec![
-            link(DerivativeOrder::First, 1.0),
-            link(DerivativeOrder::Second, 1.0),
-        ],
-        EndCondition::Anticyclic => vec![
-            link(DerivativeOrder::First, -1.0),
-            link(DerivativeOrder::Second, -1.0),
-        ],
+        EndCondition::Clamped { start, end } => vec![at(First, a, start), at(First, b, end)],
+        EndCondition::Natural => vec![at(Second, a, zero), at(Second, b, zero)],
+        EndCondition::Periodic => vec![link(First, 1.0), link(Second, 1.0)],
+        EndCondition::Anticyclic => vec![link(First, -1.0), link(Second, -1.0)],
     };
     interpolate(basis, x, y, &conditions)
 }
