@@ -1,6 +1,6 @@
 //! Parameter intervals, rectangles and partitions, validated once on construction.
 
-use crate::error::{finite, Error, Result};
+use crate::error::{derived, finite, size_sum, Error, Result};
 
 /// A closed interval `[start, end]` with finite bounds and `start < end`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -22,7 +22,9 @@ impl Interval {
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a NaN or infinite bound, [`Error::EmptyInterval`] unless
-    /// `start < end`.
+    /// `start < end`; [`Error::Overflow`] if the width `end − start` overflows,
+    /// [`Error::GapTooSmall`] if it is below `f64::MIN_POSITIVE` (its reciprocal, used by
+    /// [`Interval::to_local`], would overflow).
     pub fn try_new(start: f64, end: f64) -> Result<Self> {
         Self::named("interval", start, end)
     }
@@ -30,11 +32,11 @@ impl Interval {
     pub(crate) fn named(what: &'static str, start: f64, end: f64) -> Result<Self> {
         finite(what, start)?;
         finite(what, end)?;
-        if start < end {
-            Ok(Self { start, end })
-        } else {
-            Err(Error::EmptyInterval { what, start, end })
+        if start >= end {
+            return Err(Error::EmptyInterval { what, start, end });
         }
+        gap(what, 1, start, end)?;
+        Ok(Self { start, end })
     }
 
     /// Left end.
@@ -70,6 +72,23 @@ impl Interval {
     pub fn contains(&self, x: f64) -> bool {
         self.start <= x && x <= self.end
     }
+}
+
+/// Checks the gap `b − a > 0` between consecutive values `index − 1` and `index` is finite
+/// and at least `f64::MIN_POSITIVE`, so that it and its reciprocal are representable.
+///
+/// # Errors
+/// [`Error::Overflow`] for an infinite gap, [`Error::GapTooSmall`] for a subnormal one.
+pub(crate) fn gap(what: &'static str, index: usize, a: f64, b: f64) -> Result<f64> {
+    let g = derived(what, b - a)?;
+    if g < f64::MIN_POSITIVE {
+        return Err(Error::GapTooSmall {
+            what,
+            index,
+            gap: g,
+        });
+    }
+    Ok(g)
 }
 
 /// MATLAB's `linspace(a, b, n)` for `n ≥ 2`: `a + k (b − a)/(n − 1)`, `k = 0 … n−1`, with the
@@ -146,7 +165,9 @@ impl Partition {
     ///
     /// # Errors
     /// [`Error::PartitionTooShort`] for fewer than 2 nodes, [`Error::NonFinite`] for a NaN or
-    /// infinite node, [`Error::NotIncreasing`] unless the nodes strictly increase.
+    /// infinite node, [`Error::NotIncreasing`] unless the nodes strictly increase;
+    /// [`Error::GapTooSmall`] for two nodes closer than `f64::MIN_POSITIVE`, [`Error::Overflow`]
+    /// if the whole width overflows.
     pub fn try_new(nodes: Vec<f64>) -> Result<Self> {
         Self::named("partition", nodes)
     }
@@ -170,21 +191,34 @@ impl Partition {
                 prev: nodes[index - 1],
             });
         }
+        for k in 1..nodes.len() {
+            gap(what, k, nodes[k - 1], nodes[k])?;
+        }
+        gap(what, nodes.len() - 1, nodes[0], nodes[nodes.len() - 1])?;
         Ok(Self { nodes })
     }
 
     /// `n` equal sub-intervals of `[a, b]`: nodes `linspace(a, b, n + 1)` as in Codice 14.
     ///
+    /// The nodes are validated as [`Partition::try_new`] does: `n` so large that consecutive
+    /// nodes coincide in `f64` (e.g. `uniform(1, 1 + ε, 4)`) is an error, not a partition with
+    /// repeated nodes.
+    ///
     /// # Errors
-    /// [`Error::ZeroPatches`] if `n = 0`; the errors of [`Interval::try_new`] for the bounds.
+    /// [`Error::ZeroPatches`] if `n = 0`; [`Error::TooLarge`] if `n + 1` exceeds
+    /// [`crate::error::MAX_ELEMENTS`]; the errors of [`Interval::try_new`] for the bounds;
+    /// [`Error::NotIncreasing`] or [`Error::GapTooSmall`] if the nodes are not distinct in
+    /// `f64`.
     pub fn uniform(a: f64, b: f64, n: usize) -> Result<Self> {
         if n == 0 {
             return Err(Error::ZeroPatches { what: "partition" });
         }
+        let count = size_sum("uniform partition nodes", n, 1)?;
         Interval::named("partition", a, b)?;
-        Ok(Self {
-            nodes: linspace(a, b, n + 1),
-        })
+        Self::named(
+            "uniform partition nodes (too many sub-intervals for the width at f64 resolution)",
+            linspace(a, b, count),
+        )
     }
 
     /// The nodes `u₀ … uₙ`.

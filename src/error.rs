@@ -1,11 +1,53 @@
-//! The crate's one error type.
+//! The crate's one error type, and the policy on what is checked.
+//!
+//! # What a value of this crate guarantees
+//!
+//! - **Constructors validate what they are given and what they derive.** Inputs must be
+//!   finite and well formed (sorted, distinct, positive where the mathematics needs it), and so
+//!   must every quantity derived from them that the object relies on: interval widths, knot
+//!   gaps and their reciprocals, chord lengths and their sums, nodes of a uniform partition,
+//!   corner data of a surface, polynomial coefficients, NURBS weight ratios. A failure is a
+//!   typed [`Error`] that names the real cause.
+//! - **An `Ok` value is finite and satisfies its defining property**: an interpolant
+//!   reproduces its data (every interpolation route checks its residual and returns
+//!   [`Error::IllConditioned`] when `f64` cannot deliver it), a basis sums to one, a
+//!   partition strictly increases.
+//! - **Evaluation of a validated object at a finite parameter in its domain is finite** and
+//!   does not fail. Derivatives are exact to rounding (dual numbers, or the derivative
+//!   recurrence of *The NURBS Book* A2.3 where knots nearly coincide), finite wherever their
+//!   true value is representable. Outside the domain, curves extrapolate their end pieces.
+//! - **The domain's right end is the left limit**: a piecewise object evaluated at the last
+//!   point of its domain gives the limit from the left of its last non-empty piece (B-spline
+//!   spans, partitions, cubic-spline pieces), at every derivative order. Interior breakpoints
+//!   belong to the piece on their right.
+//! - **Sizes are limited**: a count of elements to allocate (samples, nodes, patches, grid
+//!   cells, control points of a printed recursive procedure) above [`MAX_ELEMENTS`], or whose
+//!   arithmetic overflows `usize`, is [`Error::TooLarge`]; no allocation is attempted. No
+//!   routine recurses to a depth that grows with its input beyond a stated limit, and every
+//!   iterative routine (the SVD of the report's norm) has a bounded number of iterations.
+//! - **No panic, hang or abort** on any input through the `try_*` and `Result` APIs; the
+//!   `new`-style shorthands document the panics they turn errors into.
 
 use thiserror::Error;
+
+/// The largest number of elements (samples, nodes, patches, grid cells, points) any routine
+/// of the crate will allocate in one piece: `2²⁷ ≈ 1.3 · 10⁸`. A request beyond it (or
+/// whose size arithmetic overflows) is [`Error::TooLarge`], never an allocation failure.
+/// At 24 bytes a 3-D point this is 3 GiB, far beyond any figure or table of the reports and
+/// ten times the largest benchmark workload.
+pub const MAX_ELEMENTS: usize = 1 << 27;
+
+/// The largest magnitude of a coordinate of a control point, data value or corner datum:
+/// `f64::MAX / 64 ≈ 2.8 · 10³⁰⁶`. Every evaluation form of the crate is a combination of such
+/// coordinates with weights whose absolute sum is at most 16 on the domain (Hermite and
+/// blending bases) or 1 (B-spline, NURBS, Bézier: convex combinations), so within this
+/// limit no evaluation in the domain overflows.
+pub const MAX_COORDINATE: f64 = f64::MAX / 64.0;
 
 /// Everything that can go wrong when building or evaluating splinelab objects.
 ///
 /// Construction and tabulation return `Result<_, Error>`; evaluation of an object that was
-/// validated on construction does not fail.
+/// validated on construction does not fail (see the [module docs](self) for the policy).
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum Error {
@@ -172,6 +214,18 @@ pub enum Error {
         /// Its value.
         value: f64,
     },
+    /// NURBS weights so unequal that the rational denominator could underflow.
+    #[error("weight {index} ({value:e}) is below {ratio:e} times the largest weight ({max:e})")]
+    WeightRatio {
+        /// Index of the weight.
+        index: usize,
+        /// Its value.
+        value: f64,
+        /// The largest weight.
+        max: f64,
+        /// The smallest ratio allowed ([`crate::nurbs::MIN_WEIGHT_RATIO`]).
+        ratio: f64,
+    },
     /// Two interpolation abscissae (or parameters) are equal.
     #[error("{what}: value {index} ({value}) repeats the previous one; interpolation needs distinct values")]
     RepeatedParameter {
@@ -214,6 +268,76 @@ pub enum Error {
         support_start: f64,
         /// End `t_{j+p+1}` of the support.
         support_end: f64,
+    },
+    /// A size (a count of samples, nodes, patches, points or a degree) beyond the documented
+    /// limit, or whose size arithmetic overflows.
+    #[error("{what}: {got} exceeds the limit of {max}")]
+    TooLarge {
+        /// What is counted.
+        what: &'static str,
+        /// The size asked for (`usize::MAX` when its computation overflowed).
+        got: usize,
+        /// The largest allowed.
+        max: usize,
+    },
+    /// A quantity derived from finite inputs is not representable: a width, sum or product
+    /// that overflows, a value of the user's surface that is NaN, a coefficient that
+    /// overflows.
+    #[error("{what} is {value}: not representable in f64 although the inputs are finite")]
+    Overflow {
+        /// Which derived quantity.
+        what: &'static str,
+        /// Its value (infinite or NaN).
+        value: f64,
+    },
+    /// Two consecutive distinct values (knots, nodes, abscissae) are so close that the
+    /// reciprocal of their gap overflows (the gap is below `f64::MIN_POSITIVE`).
+    #[error("{what}: gap {gap:e} between value {index} and its predecessor is below f64::MIN_POSITIVE, its reciprocal overflows")]
+    GapTooSmall {
+        /// Which input.
+        what: &'static str,
+        /// Index of the second value.
+        index: usize,
+        /// The gap.
+        gap: f64,
+    },
+    /// The computed result misses its defining property (an interpolant its data) by more
+    /// than the stated tolerance: the problem is too ill-conditioned for `f64` arithmetic.
+    #[error("{what}: the computed solution misses its data by {residual:e} relative to the data scale, above the tolerance {tolerance:e} (ill-conditioned)")]
+    IllConditioned {
+        /// Which problem.
+        what: &'static str,
+        /// The largest relative residual found.
+        residual: f64,
+        /// The tolerance it was checked against.
+        tolerance: f64,
+    },
+    /// An iterative routine did not converge within its bounded number of iterations.
+    #[error("{what} did not converge within {iterations} iterations")]
+    NoConvergence {
+        /// Which routine.
+        what: &'static str,
+        /// The bound.
+        iterations: usize,
+    },
+    /// A surface (the user's closure, or a built-in one at parameters where its formula
+    /// overflows) returned a NaN or infinite point or partial.
+    #[error("the surface is not finite at (s, t) = ({s}, {t}): a point or partial derivative is NaN or infinite")]
+    NonFiniteSurface {
+        /// The s parameter.
+        s: f64,
+        /// The t parameter.
+        t: f64,
+    },
+    /// A coordinate larger in magnitude than [`MAX_COORDINATE`].
+    #[error("{what} {value:e} exceeds the coordinate limit ±{max:e} (sums of weighted points would overflow)")]
+    CoordinateTooLarge {
+        /// Which input.
+        what: &'static str,
+        /// The value.
+        value: f64,
+        /// The limit, [`MAX_COORDINATE`].
+        max: f64,
     },
     /// Reading or writing a file failed.
     #[error("{path}: {message}")]
@@ -261,24 +385,84 @@ pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
     }
 }
 
-/// Checks that every coordinate of every point is finite.
+/// Checks that every coordinate of every point is finite and at most [`MAX_COORDINATE`] in
+/// magnitude.
 pub(crate) fn finite_points<const N: usize>(
     what: &'static str,
     points: &[nalgebra::SVector<f64, N>],
 ) -> Result<()> {
     for p in points {
         for &x in p.iter() {
-            finite(what, x)?;
+            coordinate(what, x)?;
         }
     }
     Ok(())
 }
 
-/// Returns `n` if it is at least 2, else [`Error::TooFewSamples`].
+/// Returns `value` if it is finite and at most [`MAX_COORDINATE`] in magnitude.
+pub(crate) fn coordinate(what: &'static str, value: f64) -> Result<f64> {
+    finite(what, value)?;
+    if value.abs() <= MAX_COORDINATE {
+        Ok(value)
+    } else {
+        Err(Error::CoordinateTooLarge {
+            what,
+            value,
+            max: MAX_COORDINATE,
+        })
+    }
+}
+
+/// Returns `n` if it is at least 2 and at most [`MAX_ELEMENTS`], else
+/// [`Error::TooFewSamples`] or [`Error::TooLarge`].
 pub(crate) fn samples(what: &'static str, n: usize) -> Result<usize> {
-    if n >= 2 {
+    if n < 2 {
+        return Err(Error::TooFewSamples { what, got: n });
+    }
+    size(what, n)
+}
+
+/// Returns `n` if it is at most [`MAX_ELEMENTS`], else [`Error::TooLarge`].
+pub(crate) fn size(what: &'static str, n: usize) -> Result<usize> {
+    if n <= MAX_ELEMENTS {
         Ok(n)
     } else {
-        Err(Error::TooFewSamples { what, got: n })
+        Err(Error::TooLarge {
+            what,
+            got: n,
+            max: MAX_ELEMENTS,
+        })
     }
+}
+
+/// `a · b` if it does not overflow and is at most [`MAX_ELEMENTS`], else [`Error::TooLarge`].
+pub(crate) fn size_product(what: &'static str, a: usize, b: usize) -> Result<usize> {
+    size(what, a.saturating_mul(b))
+}
+
+/// `a + b` if it does not overflow and is at most [`MAX_ELEMENTS`], else [`Error::TooLarge`].
+pub(crate) fn size_sum(what: &'static str, a: usize, b: usize) -> Result<usize> {
+    size(what, a.saturating_add(b))
+}
+
+/// Returns `value` if it is finite, else [`Error::Overflow`] (a derived quantity).
+pub(crate) fn derived(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::Overflow { what, value })
+    }
+}
+
+/// Checks that every coordinate of every derived point is finite ([`Error::Overflow`]).
+pub(crate) fn derived_points<const N: usize>(
+    what: &'static str,
+    points: &[nalgebra::SVector<f64, N>],
+) -> Result<()> {
+    for p in points {
+        for &x in p.iter() {
+            derived(what, x)?;
+        }
+    }
+    Ok(())
 }

@@ -14,19 +14,37 @@ pub struct Grid<T> {
 
 impl<T> Grid<T> {
     /// Builds the grid from `f(i, j)`.
-    pub fn from_fn(rows: usize, cols: usize, mut f: impl FnMut(usize, usize) -> T) -> Self {
-        let mut data = Vec::with_capacity(rows * cols);
+    ///
+    /// # Panics
+    /// If `rows · cols` exceeds [`crate::error::MAX_ELEMENTS`]; see [`Grid::try_from_fn`].
+    pub fn from_fn(rows: usize, cols: usize, f: impl FnMut(usize, usize) -> T) -> Self {
+        Self::try_from_fn(rows, cols, f).expect("grid too large")
+    }
+
+    /// Builds the grid from `f(i, j)`.
+    ///
+    /// # Errors
+    /// [`crate::Error::TooLarge`] if `rows · cols` overflows or exceeds
+    /// [`crate::error::MAX_ELEMENTS`] (nothing is allocated).
+    pub fn try_from_fn(
+        rows: usize,
+        cols: usize,
+        mut f: impl FnMut(usize, usize) -> T,
+    ) -> crate::Result<Self> {
+        let len = crate::error::size_product("grid cells (rows × cols)", rows, cols)?;
+        let mut data = Vec::with_capacity(len);
         for i in 0..rows {
             for j in 0..cols {
                 data.push(f(i, j));
             }
         }
-        Self { rows, cols, data }
+        Ok(Self { rows, cols, data })
     }
 
-    /// Wraps row-major `data` of length `rows * cols`; `None` if the length differs.
+    /// Wraps row-major `data` of length `rows * cols`; `None` if the length differs (or the
+    /// product overflows).
     pub fn from_vec(rows: usize, cols: usize, data: Vec<T>) -> Option<Self> {
-        (data.len() == rows * cols).then_some(Self { rows, cols, data })
+        (rows.checked_mul(cols) == Some(data.len())).then_some(Self { rows, cols, data })
     }
 
     /// Number of rows (s samples).
@@ -49,6 +67,9 @@ impl<T> Grid<T> {
     }
 
     /// Row `i` as a slice.
+    ///
+    /// # Panics
+    /// If `i` is out of range.
     pub fn row(&self, i: usize) -> &[T] {
         &self.data[i * self.cols..(i + 1) * self.cols]
     }

@@ -64,7 +64,10 @@ pub use interp::param::Parametrization;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
 pub use metrics::{compare, matlab_norm, CoordErrors};
 pub use nurbs::NurbsCurve;
-pub use study::{convergence, spline_errors, uniform_spline_errors, PatchEvaluation};
+pub use study::{
+    convergence, spline_errors, uniform_spline_errors, ConvergenceOrders, ConvergenceRow,
+    PatchEvaluation,
+};
 pub use surface::{
     partials_on_grid, partials_on_grid_into, tabulate, ExpSurface, FnSurface, ParametricSurface,
     Partials, Sphere, SurfaceDerivatives, Torus,

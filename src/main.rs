@@ -3,6 +3,7 @@
 use anyhow::Context;
 use clap::{Parser, Subcommand};
 use splinelab::report::{bench, describe_outputs, write_all, write_only};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Duration;
@@ -49,17 +50,27 @@ fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("splinelab: error: {e:#}");
+            // a closed stderr must not turn the error into a panic either
+            let _ = writeln!(std::io::stderr(), "splinelab: error: {e:#}");
             ExitCode::FAILURE
         }
     }
+}
+
+/// Prints one line on standard output; a closed or full stdout is an error (exit 1 with a
+/// message), never a panic as `println!` would give.
+fn say(line: impl std::fmt::Display) -> anyhow::Result<()> {
+    let mut out = std::io::stdout().lock();
+    writeln!(out, "{line}")
+        .and_then(|()| out.flush())
+        .context("writing to standard output")
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
     if let Some(Command::Bench { only, millis, list }) = cli.command {
         if list {
             for w in &bench::WORKLOADS {
-                println!("{:<20} {}", w.id, w.description);
+                say(format_args!("{:<20} {}", w.id, w.description))?;
             }
             return Ok(());
         }
@@ -70,12 +81,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         };
         for id in ids {
             let r = bench::run(&id, Duration::from_millis(millis))?;
-            println!("{}", r.to_json());
+            say(r.to_json())?;
         }
         return Ok(());
     }
     if cli.list {
-        println!("{}", describe_outputs());
+        say(describe_outputs())?;
         return Ok(());
     }
     let written = if cli.only.is_empty() {
@@ -89,7 +100,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
     }
     .with_context(|| format!("regenerating outputs into {}", cli.out.display()))?;
     for path in &written {
-        println!("wrote {}", path.display());
+        say(format_args!("wrote {}", path.display()))?;
     }
     Ok(())
 }

@@ -4,13 +4,52 @@ use crate::error::{Error, Result};
 use crate::grid::Grid;
 use nalgebra::{DMatrix, Vector3};
 
+/// Iterations the SVD of [`matlab_norm`] may take per matrix dimension before it gives up
+/// (Golub–Kahan with implicit shifts converges in a few per singular value; the bound only
+/// exists so that no input can make it loop for ever).
+const SVD_ITERATIONS_PER_DIM: usize = 1000;
+
 /// MATLAB's `norm(M)` of a matrix: its 2-norm, the largest singular value (not Frobenius).
 /// `0` for an empty matrix.
-pub fn matlab_norm(m: &DMatrix<f64>) -> f64 {
+///
+/// The matrix is scaled by its largest entry before the SVD (the norm is homogeneous), so
+/// entries near the overflow threshold do not overflow inside the iteration; the iteration
+/// count is bounded.
+///
+/// # Errors
+/// [`Error::NonFinite`] for a NaN or infinite entry (checked before any iteration: the SVD
+/// never converges on them); [`Error::NoConvergence`] if the bounded SVD does not converge;
+/// [`Error::Overflow`] if the norm itself exceeds `f64::MAX`.
+pub fn matlab_norm(m: &DMatrix<f64>) -> Result<f64> {
     if m.is_empty() {
-        return 0.0;
+        return Ok(0.0);
     }
-    m.singular_values().max()
+    crate::error::derived("matrix norm", singular_values(m)?.max())
+}
+
+/// The singular values of a non-empty matrix, scaled SVD with a bounded iteration count (see
+/// [`matlab_norm`]); all zero for a zero matrix.
+///
+/// # Errors
+/// As [`matlab_norm`], except that an overflowing result is returned as infinite.
+pub(crate) fn singular_values(m: &DMatrix<f64>) -> Result<nalgebra::DVector<f64>> {
+    let mut scale: f64 = 0.0;
+    for &x in m.iter() {
+        crate::error::finite("matrix entry", x)?;
+        scale = scale.max(x.abs());
+    }
+    let dim = m.nrows().min(m.ncols());
+    if scale == 0.0 {
+        return Ok(nalgebra::DVector::zeros(dim));
+    }
+    let iterations = SVD_ITERATIONS_PER_DIM.saturating_mul(m.nrows().max(m.ncols()));
+    let svd = nalgebra::SVD::try_new(m / scale, false, false, f64::EPSILON, iterations).ok_or(
+        Error::NoConvergence {
+            what: "singular value decomposition",
+            iterations,
+        },
+    )?;
+    Ok(svd.singular_values * scale)
 }
 
 /// Errors of an approximation per coordinate (x, y, z).
@@ -48,7 +87,9 @@ impl ErrorAccumulator {
     /// Adds one patch: `approx` and `exact` tabulated on the same grid.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] if the grids differ in shape.
+    /// [`Error::ShapeMismatch`] if the grids differ in shape; [`Error::NonFinite`] for a NaN
+    /// or infinite value in either grid, or whose difference overflows (an error measure never
+    /// ignores NaN); the errors of [`matlab_norm`].
     pub fn add_patch(
         &mut self,
         approx: &Grid<Vector3<f64>>,
@@ -63,14 +104,19 @@ impl ErrorAccumulator {
             });
         }
         let (r, c) = (approx.rows(), approx.cols());
-        let diff: Vec<Vector3<f64>> = approx
-            .as_slice()
-            .iter()
-            .zip(exact.as_slice())
-            .map(|(a, e)| (a - e).abs())
-            .collect();
+        let mut diff: Vec<Vector3<f64>> = Vec::with_capacity(approx.as_slice().len());
+        for (a, e) in approx.as_slice().iter().zip(exact.as_slice()) {
+            for &x in a.iter().chain(e.iter()) {
+                crate::error::finite("compared grid value", x)?;
+            }
+            let d = (a - e).abs();
+            for &x in d.iter() {
+                crate::error::derived("difference of compared grid values", x)?;
+            }
+            diff.push(d);
+        }
         for (k, sum) in self.norm_sum.iter_mut().enumerate() {
-            *sum += matlab_norm(&DMatrix::from_fn(r, c, |i, j| diff[i * c + j][k]));
+            *sum += matlab_norm(&DMatrix::from_fn(r, c, |i, j| diff[i * c + j][k]))?;
         }
         for d in &diff {
             self.max_abs = self.max_abs.sup(d);
@@ -96,7 +142,7 @@ impl ErrorAccumulator {
 /// Errors of one tabulation against another (Codice 6 for a single patch).
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] if the grids differ in shape.
+/// As [`ErrorAccumulator::add_patch`].
 pub fn compare(approx: &Grid<Vector3<f64>>, exact: &Grid<Vector3<f64>>) -> Result<CoordErrors> {
     let mut acc = ErrorAccumulator::new();
     acc.add_patch(approx, exact)?;
@@ -111,8 +157,18 @@ mod tests {
     fn matlab_norm_is_the_largest_singular_value_not_frobenius() {
         // rank-one all-ones p×p: singular value p, Frobenius p too; diag(3, 4): 4 vs 5
         let m = DMatrix::from_row_slice(2, 2, &[3.0, 0.0, 0.0, 4.0]);
-        assert!((matlab_norm(&m) - 4.0).abs() < 1e-14, "{}", matlab_norm(&m));
+        let n = matlab_norm(&m).expect("finite");
+        assert!((n - 4.0).abs() < 1e-14, "{n}");
         let ones = DMatrix::from_element(15, 15, 1.0);
-        assert!((matlab_norm(&ones) - 15.0).abs() < 1e-12);
+        let n = matlab_norm(&ones).expect("finite");
+        assert!((n - 15.0).abs() < 1e-12, "{n}");
+        // near the overflow threshold: scaled, not overflowed
+        let big = DMatrix::from_element(3, 3, 1e307);
+        let n = matlab_norm(&big).expect("finite");
+        assert!((n / 3e307 - 1.0).abs() < 1e-12, "{n}");
+        let huge = DMatrix::from_element(3, 3, 1e308);
+        assert!(matches!(matlab_norm(&huge), Err(Error::Overflow { .. })));
+        let nan = DMatrix::from_row_slice(2, 2, &[1.0, f64::NAN, 0.0, 1.0]);
+        assert!(matches!(matlab_norm(&nan), Err(Error::NonFinite { .. })));
     }
 }

@@ -31,7 +31,16 @@ pub struct NurbsCurve<const N: usize> {
     basis: BSplineBasis,
     points: Vec<SVector<f64, N>>,
     weights: Vec<f64>,
+    /// `wᵢ / max wⱼ`, used in evaluation: the curve is unchanged by a common factor of the
+    /// weights, and scaled weights keep `Σ wᵢNᵢ` away from underflow.
+    scaled: Vec<f64>,
 }
+
+/// The smallest ratio `min wᵢ / max wᵢ` a NURBS curve accepts. The denominator
+/// `Σ wᵢNᵢ ≥ min wᵢ / max wᵢ` (scaled weights, partition of unity) must stay a normal number
+/// with room for the `p + 1` products: `10⁻²⁸⁰` leaves 28 orders of magnitude above
+/// `f64::MIN_POSITIVE`. Weights spanning more than 280 orders of magnitude are rejected.
+pub const MIN_WEIGHT_RATIO: f64 = 1e-280;
 
 impl<const N: usize> NurbsCurve<N> {
     /// The curve with control points `points` and weights `weights` on `basis`.
@@ -47,6 +56,7 @@ impl<const N: usize> NurbsCurve<N> {
     /// # Errors
     /// [`Error::CountMismatch`] unless there is one control point and one weight per basis
     /// function; [`Error::NonPositiveWeight`] for a weight that is not positive and finite;
+    /// [`Error::WeightRatio`] for one smaller than [`MIN_WEIGHT_RATIO`] times the largest;
     /// [`Error::NonFinite`] for a NaN or infinite coordinate.
     pub fn try_new(
         basis: BSplineBasis,
@@ -73,10 +83,25 @@ impl<const N: usize> NurbsCurve<N> {
             return Err(Error::NonPositiveWeight { index, value });
         }
         finite_points("NURBS control point coordinate", &points)?;
+        let max = weights.iter().copied().fold(0.0, f64::max);
+        let scaled: Vec<f64> = weights.iter().map(|w| w / max).collect();
+        if let Some((index, _)) = scaled
+            .iter()
+            .enumerate()
+            .find(|(_, &r)| r.is_nan() || r < MIN_WEIGHT_RATIO)
+        {
+            return Err(Error::WeightRatio {
+                index,
+                value: weights[index],
+                max,
+                ratio: MIN_WEIGHT_RATIO,
+            });
+        }
         Ok(Self {
             basis,
             points,
             weights,
+            scaled,
         })
     }
 
@@ -123,7 +148,7 @@ impl<const N: usize> NurbsCurve<N> {
         let first = span - self.basis.degree();
         n.iter()
             .zip(&self.points[first..=span])
-            .zip(&self.weights[first..=span])
+            .zip(&self.scaled[first..=span])
             .fold(
                 (SVector::<D, N>::zeros(), D::zero()),
                 |(num, den), ((&b, p), &w)| {
@@ -157,17 +182,34 @@ impl<const N: usize> NurbsCurve<N> {
     /// numerator and denominator polynomials of each span are formed once, exactly (Taylor
     /// coefficients from a third-order dual number), then each point costs two Horner
     /// evaluations and a division.
+    ///
+    /// The power forms are used on a span only where the projection keeps their accuracy:
+    /// with `w_min` the smallest (scaled) weight of the span, `Σ wᵢNᵢ ≥ w_min` there, and the
+    /// error of `X / W` is at most `6ε (S_X + ‖P‖ S_W) / w_min` for the sizes `S` of the two
+    /// power forms ([`horner::size`]); the span takes the fast path only if that is within
+    /// `TAYLOR_GROWTH · 6ε · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send their
+    /// spans to point-by-point evaluation as [`ParametricCurve::eval`].
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        let p = self.basis.degree();
         walk_spans(
             &self.basis,
             ts,
             out,
-            |span, t0| {
+            |span, t0, width| {
                 let (num, den) = self.homogeneous_on_span(span, horner::seed(t0));
-                (
+                let (num, den) = (
                     horner::taylor(&num),
                     horner::taylor(&SVector::<_, 1>::new(den)),
-                )
+                );
+                let scale = horner::max_norm(&self.points[span - p..=span]);
+                let w_min = self.scaled[span - p..=span]
+                    .iter()
+                    .copied()
+                    .fold(f64::INFINITY, f64::min);
+                let growth =
+                    (horner::size(&num, width) + scale * horner::size(&den, width)) / w_min;
+                (growth.is_finite() && growth <= horner::TAYLOR_GROWTH * scale)
+                    .then_some((num, den))
             },
             |(num, den), h| Self::project((horner::eval(num, h), horner::eval(den, h).x)),
             |span, t| Self::project(self.homogeneous_on_span(span, t)),

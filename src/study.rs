@@ -51,7 +51,10 @@ impl PatchEvaluation {
 /// errors are reduced ([`CoordErrors`]).
 ///
 /// # Errors
-/// [`Error::TooFewSamples`] if `prec < 2`.
+/// [`Error::TooFewSamples`] if `prec < 2`; [`Error::TooLarge`] for more patches or samples
+/// than [`crate::error::MAX_ELEMENTS`]; the errors of [`HermiteSpline::try_from_surface`],
+/// of [`tabulate`] and of [`ErrorAccumulator::add_patch`] (a surface that is NaN or overflows
+/// anywhere on the samples is an error, never a hang or a NaN measure).
 pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     u: Partition,
@@ -59,7 +62,9 @@ pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     prec: usize,
     eval: PatchEvaluation,
 ) -> Result<CoordErrors> {
-    let spline = HermiteSpline::from_surface(surface, u, v);
+    crate::error::size_product("patches n × m", u.len(), v.len())?;
+    crate::error::size_product("samples per patch prec × prec", prec, prec)?;
+    let spline = HermiteSpline::try_from_surface(surface, u, v)?;
     let (n, m) = spline.patch_counts();
     let mut acc = ErrorAccumulator::new();
     for i in 0..n {
@@ -108,8 +113,20 @@ pub struct ConvergenceRow {
     /// The errors.
     pub errors: CoordErrors,
     /// Observed order `log(e_prev / e) / log(h_prev / h)` of each measure against the previous
-    /// row; `None` on the first row. Components are NaN where an error is exactly zero.
-    pub order: Option<CoordErrors>,
+    /// row; `None` on the first row.
+    pub order: Option<ConvergenceOrders>,
+}
+
+/// Observed orders of convergence per measure and coordinate (x, y, z); `None` where an error
+/// of either row is exactly zero (or the ratio is not finite), so no order can be measured.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConvergenceOrders {
+    /// Order of the report's measure.
+    pub report_norm: [Option<f64>; 3],
+    /// Order of the max-abs error.
+    pub max_abs: [Option<f64>; 3],
+    /// Order of the RMS error.
+    pub rms: [Option<f64>; 3],
 }
 
 /// Convergence of the Hermite spline on `n × n` uniform patches of `rect` for each `n` in
@@ -140,9 +157,12 @@ pub fn convergence<S: SurfaceDerivatives + Sync + ?Sized>(
         let h = rect.s.width() / n as f64;
         let order = rows.last().map(|prev| {
             let rate = |a: Vector3<f64>, b: Vector3<f64>| {
-                a.zip_map(&b, |ea, eb| (ea / eb).ln() / (prev.h / h).ln())
+                std::array::from_fn(|k| {
+                    let order = (a[k] / b[k]).ln() / (prev.h / h).ln();
+                    (a[k] > 0.0 && b[k] > 0.0 && order.is_finite()).then_some(order)
+                })
             };
-            CoordErrors {
+            ConvergenceOrders {
                 report_norm: rate(prev.errors.report_norm, errors.report_norm),
                 max_abs: rate(prev.errors.max_abs, errors.max_abs),
                 rms: rate(prev.errors.rms, errors.rms),

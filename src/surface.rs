@@ -170,12 +170,16 @@ impl Torus {
     /// A torus with major radius `major` (`R`) and minor radius `minor` (`r`).
     ///
     /// # Errors
-    /// [`Error::NotPositive`] unless both radii are positive and finite.
+    /// [`Error::NotPositive`] unless both radii are positive and finite;
+    /// [`Error::CoordinateTooLarge`] if `R + r` (the largest coordinate of a point, and a
+    /// bound on every partial) exceeds [`crate::error::MAX_COORDINATE`].
     pub fn try_new(major: f64, minor: f64) -> Result<Self> {
-        Ok(Self {
+        let torus = Self {
             major: positive("torus major radius", major)?,
             minor: positive("torus minor radius", minor)?,
-        })
+        };
+        crate::error::coordinate("torus R + r", major + minor)?;
+        Ok(torus)
     }
 
     /// Major radius `R`.
@@ -224,10 +228,11 @@ impl Sphere {
     /// A sphere of radius `radius`.
     ///
     /// # Errors
-    /// [`Error::NotPositive`] unless the radius is positive and finite.
+    /// [`Error::NotPositive`] unless the radius is positive and finite;
+    /// [`Error::CoordinateTooLarge`] above [`crate::error::MAX_COORDINATE`].
     pub fn try_new(radius: f64) -> Result<Self> {
         Ok(Self {
-            radius: positive("sphere radius", radius)?,
+            radius: crate::error::coordinate("sphere radius", positive("sphere radius", radius)?)?,
         })
     }
 
@@ -264,7 +269,9 @@ impl ParametricSurface for ExpSurface {
 /// row `i` is `sᵢ`, column `j` is `tⱼ` (the layout of `X'` in Codice 14).
 ///
 /// # Errors
-/// [`Error::TooFewSamples`] if `ns < 2` or `nt < 2`.
+/// [`Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`Error::TooLarge`] if `ns · nt`
+/// exceeds [`crate::error::MAX_ELEMENTS`]; [`Error::NonFiniteSurface`] where the surface
+/// returns a NaN or infinite point.
 pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
     surface: &S,
     rect: &Rect,
@@ -273,20 +280,41 @@ pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
 ) -> Result<Grid<Vector3<f64>>> {
     let s = rect.s.linspace(ns)?;
     let t = rect.t.linspace(nt)?;
-    Ok(Grid::from_fn(ns, nt, |i, j| surface.point(s[i], t[j])))
+    let grid = Grid::try_from_fn(ns, nt, |i, j| surface.point(s[i], t[j]))?;
+    if let Some(k) = grid
+        .as_slice()
+        .iter()
+        .position(|p| !p.iter().all(|x| x.is_finite()))
+    {
+        return Err(Error::NonFiniteSurface {
+            s: s[k / nt],
+            t: t[k % nt],
+        });
+    }
+    Ok(grid)
+}
+
+/// Whether every component of a partials record is finite.
+fn partials_finite(p: &Partials) -> bool {
+    [p.point, p.ds, p.dt, p.dst]
+        .iter()
+        .all(|v| v.iter().all(|x| x.is_finite()))
 }
 
 /// `X, X_s, X_t, X_st` at every node of `s_nodes × t_nodes` (row `i` is `s_nodes[i]`).
 ///
 /// Large grids are split into blocks of rows evaluated on all available cores.
+///
+/// # Errors
+/// As [`partials_on_grid_into`].
 pub fn partials_on_grid<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     s_nodes: &[f64],
     t_nodes: &[f64],
-) -> Grid<Partials> {
+) -> Result<Grid<Partials>> {
     let mut out = Vec::new();
-    partials_on_grid_into(surface, s_nodes, t_nodes, &mut out);
-    Grid::from_vec(s_nodes.len(), t_nodes.len(), out).expect("filled rows × cols")
+    partials_on_grid_into(surface, s_nodes, t_nodes, &mut out)?;
+    Ok(Grid::from_vec(s_nodes.len(), t_nodes.len(), out).expect("filled rows × cols"))
 }
 
 /// Below this many nodes a grid is evaluated on the calling thread only.
@@ -294,12 +322,18 @@ const PARALLEL_MIN_NODES: usize = 16_384;
 
 /// As [`partials_on_grid`], writing row-major into `out` (resized) so a caller that
 /// evaluates repeatedly reuses one buffer.
+///
+/// # Errors
+/// [`Error::TooLarge`] if the node count overflows or exceeds
+/// [`crate::error::MAX_ELEMENTS`] (nothing is allocated); [`Error::NonFiniteSurface`] at the
+/// first node (in row-major order) where a point or partial is NaN or infinite (`out` then
+/// holds the values computed, unchecked).
 pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     s_nodes: &[f64],
     t_nodes: &[f64],
     out: &mut Vec<Partials>,
-) {
+) -> Result<()> {
     let zero = Partials {
         point: Vector3::zeros(),
         ds: Vector3::zeros(),
@@ -307,30 +341,46 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
         dst: Vector3::zeros(),
     };
     let cols = t_nodes.len();
+    let len = crate::error::size_product("surface grid nodes", s_nodes.len(), cols)?;
     out.clear();
-    out.resize(s_nodes.len() * cols, zero);
+    out.resize(len, zero);
     if cols == 0 {
-        return;
+        return Ok(());
     }
-    let fill = |rows: &[f64], block: &mut [Partials]| {
+    // each block reports whether all its values are finite
+    let fill = |rows: &[f64], block: &mut [Partials]| -> bool {
+        let mut ok = true;
         for (&s, row) in rows.iter().zip(block.chunks_mut(cols)) {
             for (&t, p) in t_nodes.iter().zip(row) {
                 *p = surface.partials(s, t);
+                ok &= partials_finite(p);
             }
         }
+        ok
     };
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    if threads == 1 || out.len() < PARALLEL_MIN_NODES {
-        fill(s_nodes, out);
-        return;
+    let all_finite = if threads == 1 || out.len() < PARALLEL_MIN_NODES {
+        fill(s_nodes, out)
+    } else {
+        let rows_per = s_nodes.len().div_ceil(threads);
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = s_nodes
+                .chunks(rows_per)
+                .zip(out.chunks_mut(rows_per * cols))
+                .map(|(rows, block)| scope.spawn(move || fill(rows, block)))
+                .collect();
+            // a panic in the user's surface is propagated as it would be on one thread
+            handles.into_iter().fold(true, |ok, h| {
+                ok & h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+            })
+        })
+    };
+    if !all_finite {
+        let k = out.iter().position(|p| !partials_finite(p)).unwrap_or(0);
+        return Err(Error::NonFiniteSurface {
+            s: s_nodes[k / cols],
+            t: t_nodes[k % cols],
+        });
     }
-    let rows_per = s_nodes.len().div_ceil(threads);
-    std::thread::scope(|scope| {
-        for (rows, block) in s_nodes
-            .chunks(rows_per)
-            .zip(out.chunks_mut(rows_per * cols))
-        {
-            scope.spawn(move || fill(rows, block));
-        }
-    });
+    Ok(())
 }

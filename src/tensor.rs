@@ -10,6 +10,30 @@ use num_dual::DualNum;
 /// A 4×4 net of points; `net[i][j]` pairs the `i`-th s basis function with the `j`-th t one.
 pub type Net = [[Vector3<f64>; 4]; 4];
 
+/// The largest magnitude of a net entry, `f64::MAX / 16`: on `[0, 1]²` the Bernstein
+/// weights sum to 1 and the absolute Hermite weights to at most `1.25² < 16`, so no
+/// evaluation of a valid net overflows. (Nets derived from corner data within
+/// [`crate::error::MAX_COORDINATE`] stay below `f64::MAX / 36`.)
+pub const NET_LIMIT: f64 = f64::MAX / 16.0;
+
+/// Checks every coordinate of a net is finite and within [`NET_LIMIT`].
+///
+/// # Errors
+/// [`crate::Error::NonFinite`] or [`crate::Error::CoordinateTooLarge`].
+pub(crate) fn check_net(what: &'static str, net: &Net) -> crate::Result<()> {
+    for x in net.iter().flatten().flat_map(|p| p.iter()) {
+        crate::error::finite(what, *x)?;
+        if x.abs() > NET_LIMIT {
+            return Err(crate::Error::CoordinateTooLarge {
+                what,
+                value: *x,
+                max: NET_LIMIT,
+            });
+        }
+    }
+    Ok(())
+}
+
 /// `Σᵢ Σⱼ a[i] b[j] net[i][j]` for any number type.
 pub fn tensor_eval<D: DualNum<Primitive = f64> + Copy>(
     a: &[D; 4],

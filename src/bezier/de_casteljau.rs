@@ -68,7 +68,9 @@ where
 /// program cannot draw curves of more than 20 control points with it fits this cost.
 ///
 /// # Errors
-/// [`Error::TooFewPoints`] below 2 points (the listing would recurse without end on one).
+/// [`Error::TooFewPoints`] below 2 points (the listing would recurse without end on one);
+/// [`Error::TooLarge`] above [`MAX_RECURSIVE_POINTS`] points (the call count doubles with
+/// every point, and the recursion depth grows with the input).
 ///
 /// # Examples
 /// ```
@@ -96,21 +98,36 @@ where
         }
     }
     at_least("recursive de Casteljau control points", points, 2)?;
+    if points.len() > MAX_RECURSIVE_POINTS {
+        return Err(Error::TooLarge {
+            what: "recursive de Casteljau control points (2ⁿ⁻¹ calls)",
+            got: points.len(),
+            max: MAX_RECURSIVE_POINTS,
+        });
+    }
     Ok(castel(points, 0, points.len() - 1, u))
 }
+
+/// The most control points [`de_casteljau_recursive`] accepts: `2²³ ≈ 8 · 10⁶` calls, a
+/// fraction of a second, at a recursion depth of 23. (Seed 003 notes that its program cannot
+/// draw curves of more than 20 points with it.)
+pub const MAX_RECURSIVE_POINTS: usize = 24;
 
 /// Every level of de Casteljau's triangle at `u`: level 0 is the control polygon, level `k`
 /// the `n − k` points `(1 − u) Qᵢ + u Qᵢ₊₁` of level `k − 1`, the last level the curve point
 /// (seed 003's construction figures at `u = 0.3, 0.5, 0.7`).
 ///
 /// # Errors
-/// [`Error::TooFewPoints`] for an empty slice.
+/// [`Error::TooFewPoints`] for an empty slice; [`Error::TooLarge`] if the `n(n + 1)/2` points
+/// of the triangle exceed [`crate::error::MAX_ELEMENTS`].
 pub fn de_casteljau_levels<P, D>(points: &[P], u: D) -> Result<Vec<Vec<P>>>
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
     D: DualNum<Primitive = f64> + Copy,
 {
     at_least("de Casteljau control points", points, 1)?;
+    let n = points.len();
+    crate::error::size_product("de Casteljau triangle points", n, n.div_ceil(2) + 1)?;
     let r = -u + 1.0;
     let mut levels = vec![points.to_vec()];
     while let Some(last) = levels.last().filter(|l| l.len() > 1) {

@@ -26,8 +26,21 @@ fn hermite_to_bezier_1d(h: [Vector3<f64>; 4]) -> [Vector3<f64>; 4] {
 
 impl BezierPatch {
     /// A patch from its control net (`m[i][j]`: row `i` ↔ s).
+    ///
+    /// # Panics
+    /// On an invalid net; see [`BezierPatch::try_from_net`].
     pub fn from_net(m: Net) -> Self {
-        Self { m }
+        Self::try_from_net(m).expect("invalid Bézier net")
+    }
+
+    /// A patch from its control net, checked.
+    ///
+    /// # Errors
+    /// [`crate::Error::NonFinite`] for a NaN or infinite coordinate,
+    /// [`crate::Error::CoordinateTooLarge`] beyond [`crate::tensor::NET_LIMIT`].
+    pub fn try_from_net(m: Net) -> Result<Self> {
+        crate::tensor::check_net("Bézier control point", &m)?;
+        Ok(Self { m })
     }
 
     /// The Bézier form of a Hermite patch (seed 000 §4, Codice 7–8, corrected).
@@ -101,8 +114,10 @@ impl BezierPatch {
     /// By the tensor-product structure this equals Codice 11 at every sample.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`.
+    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::Error::TooLarge`] if
+    /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate_de_casteljau(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
+        crate::error::size_product("patch samples ns × nt", ns, nt)?;
         let s = crate::domain::linspace(0.0, 1.0, samples("ns", ns)?);
         let t = crate::domain::linspace(0.0, 1.0, samples("nt", nt)?);
         let mut out = Vec::with_capacity(ns * nt);
@@ -119,8 +134,10 @@ impl BezierPatch {
     /// Tabulates by the Bernstein matrix form, basis rows computed once per grid line.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`.
+    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::Error::TooLarge`] if
+    /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate_bernstein(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
+        crate::error::size_product("patch samples ns × nt", ns, nt)?;
         let rows = local_basis_samples(samples("ns", ns)?, bernstein3);
         let cols = local_basis_samples(samples("nt", nt)?, bernstein3);
         let mut out = Vec::new();

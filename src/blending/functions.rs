@@ -85,8 +85,12 @@ pub fn uniform_bspline4<D: DualNum<Primitive = f64> + Copy>(u: D) -> [D; 4] {
 /// computed the way the listing does: `b₀ = (1−u)³/6`, `b₂ = (((1 − u)u + 1)u + 1/3)/2`
 /// (a Horner form of `(−3u³ + 3u² + 3u + 1)/6`), `b₃ = u³/6`, `b₁ = 1 − b₀ − b₂ − b₃`.
 /// Kept to check the listing against [`uniform_bspline4`]; returns `[b₀, b₁, b₂, b₃]` per `j`.
-pub fn printed_setbval(nb: usize) -> Vec<[f64; 4]> {
-    (0..nb)
+///
+/// # Errors
+/// [`crate::Error::TooLarge`] if `nb` exceeds [`crate::error::MAX_ELEMENTS`].
+pub fn printed_setbval(nb: usize) -> crate::Result<Vec<[f64; 4]>> {
+    crate::error::size("setbval samples (nb)", nb)?;
+    Ok((0..nb)
         .map(|j| {
             let u = j as f64 / nb as f64;
             let b0 = (1.0 - u) * (1.0 - u) * (1.0 - u) / 6.0;
@@ -94,5 +98,5 @@ pub fn printed_setbval(nb: usize) -> Vec<[f64; 4]> {
             let b3 = u * u * u / 6.0;
             [b0, 1.0 - b0 - b2 - b3, b2, b3]
         })
-        .collect()
+        .collect())
 }

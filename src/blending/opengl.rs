@@ -50,10 +50,11 @@ pub fn opengl_groups<const N: usize>(
     }
     finite_points("OpenGL evaluator control point", points)?;
     let mut groups = Vec::new();
-    let mut buffer: Vec<SVector<f64, N>> = Vec::with_capacity(order);
+    // never more than the points there are: the order may be huge
+    let mut buffer: Vec<SVector<f64, N>> = Vec::with_capacity(order.min(points.len()));
     let mut kb = 0;
     while kb < points.len() {
-        let fresh = &points[kb..(kb + order).min(points.len())];
+        let fresh = &points[kb..kb.saturating_add(order).min(points.len())];
         match last {
             LastGroup::Truncated => {
                 if fresh.len() >= 2 {
@@ -70,7 +71,7 @@ pub fn opengl_groups<const N: usize>(
                 groups.push(buffer.clone());
             }
         }
-        kb += order - 1;
+        kb = kb.saturating_add(order - 1);
     }
     Ok(groups)
 }
@@ -79,7 +80,8 @@ pub fn opengl_groups<const N: usize>(
 /// `u = k/nseg`, `k = 0 … nseg` (the listing's `glEvalCoord1f` loop), groups concatenated.
 ///
 /// # Errors
-/// As [`opengl_groups`]; [`Error::TooFewSamples`] for `nseg = 0`.
+/// As [`opengl_groups`]; [`Error::TooFewSamples`] for `nseg = 0`; [`Error::TooLarge`] if the
+/// polyline's points exceed [`crate::error::MAX_ELEMENTS`].
 pub fn opengl_polyline<const N: usize>(
     points: &[SVector<f64, N>],
     order: usize,
@@ -92,14 +94,14 @@ pub fn opengl_polyline<const N: usize>(
             got: 0,
         });
     }
+    let groups = opengl_groups(points, order, last)?;
+    let per_group = crate::error::size_sum("segments per group (nseg)", nseg, 1)?;
+    crate::error::size_product("OpenGL evaluator polyline points", groups.len(), per_group)?;
     let mut out = Vec::new();
-    for group in opengl_groups(points, order, last)? {
+    for group in groups {
         for k in 0..=nseg {
             let u = k as f64 / nseg as f64;
-            // a group is never empty, so the Bernstein sum exists
-            if let Some(p) = bernstein_sum(&group, u) {
-                out.push(p);
-            }
+            out.push(bernstein_sum(&group, u)?);
         }
     }
     Ok(out)

@@ -38,11 +38,7 @@ impl SlidingBicubic {
                 got: rows.min(cols),
             });
         }
-        for p in points.as_slice() {
-            for &x in p.iter() {
-                crate::error::finite("grid point coordinate", x)?;
-            }
-        }
+        crate::error::finite_points("grid point coordinate", points.as_slice())?;
         let cells = (rows - 3, cols - 3);
         let mut nets = Vec::with_capacity(cells.0 * cells.1);
         for i in 0..cells.0 {
@@ -85,7 +81,8 @@ impl SlidingBicubic {
     /// Cell `(i, j)` tabulated on `n × n` samples of `[0, 1]²` (basis rows computed once).
     ///
     /// # Errors
-    /// [`Error::TooFewSamples`] below 2; [`Error::IndexOutOfRange`] for a bad cell.
+    /// [`Error::TooFewSamples`] below 2; [`Error::TooLarge`] if `n²` exceeds
+    /// [`crate::error::MAX_ELEMENTS`]; [`Error::IndexOutOfRange`] for a bad cell.
     pub fn tabulate_cell(&self, cell: (usize, usize), n: usize) -> Result<Grid<Vector3<f64>>> {
         if cell.0 >= self.cells.0 || cell.1 >= self.cells.1 {
             return Err(Error::IndexOutOfRange {
@@ -94,6 +91,7 @@ impl SlidingBicubic {
                 len: self.nets.len(),
             });
         }
+        crate::error::size_product("cell samples n × n", n, n)?;
         let rows: Vec<BasisSample> = crate::domain::linspace(0.0, 1.0, samples("cell samples", n)?)
             .into_iter()
             .map(|u| BasisSample {

@@ -114,7 +114,8 @@ impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
 /// segment, `(P_{n−2} − P_{n−1})/(6 nb³)` short of the last point (a hair's breadth).
 ///
 /// # Errors
-/// As [`WindowCurve::printed_bspline`]; [`Error::TooFewSamples`] for `nb = 0`.
+/// As [`WindowCurve::printed_bspline`]; [`Error::TooFewSamples`] for `nb = 0`;
+/// [`Error::TooLarge`] if the vertices exceed [`crate::error::MAX_ELEMENTS`].
 pub fn printed_bspline_polyline<const N: usize>(
     points: &[SVector<f64, N>],
     nb: usize,
@@ -126,7 +127,13 @@ pub fn printed_bspline_polyline<const N: usize>(
         });
     }
     let curve = WindowCurve::printed_bspline(points)?;
-    let b = printed_setbval(nb);
+    let segments = crate::error::size_sum("bspline segments", points.len(), 1)?;
+    crate::error::size_sum(
+        "bspline polyline vertices",
+        crate::error::size_product("bspline polyline vertices", segments, nb)?,
+        1,
+    )?;
+    let b = printed_setbval(nb)?;
     let xx = curve.window_points();
     let mut out = vec![xx[0]];
     for k in 1..=points.len() + 1 {

@@ -3,7 +3,7 @@
 
 use crate::bspline::knots::KnotVector;
 use crate::error::{Error, Result};
-use num_dual::{Dual2_64, DualNum};
+use num_dual::DualNum;
 
 /// The normalised B-spline basis `{N_{i,p}}`, `i = 0 … n`, of degree `p` (order `m = p + 1`) on a
 /// knot vector `t₀ ≤ … ≤ t_{n+p+1}` (0-based; the slides count from 1).
@@ -12,8 +12,12 @@ use num_dual::{Dual2_64, DualNum};
 /// `p + 1`, and a non-empty domain `[a, b] = [t_p, t_{n+1}]`, where the functions sum to 1.
 ///
 /// Conventions (seed 001): `N_{i,0}(t) = 1` on `[tᵢ, tᵢ₊₁)`, else 0, and `0/0 = 0` in the
-/// Cox–de Boor recurrence. The right end `t = b` belongs to the last non-empty span (the
-/// half-open rule alone would give all zeros there).
+/// Cox–de Boor recurrence. **The right end `t = b` is the left limit**: it belongs to the
+/// last non-empty span `[t_ℓ, t_{ℓ+1})` with `t_ℓ < b`, whatever the multiplicity of `b`
+/// and whether or not the vector is clamped (the half-open rule alone would give all zeros
+/// at a clamped end, and an empty span where `b` is repeated without being clamped, e.g.
+/// knots `(0,0,0,1,1,1,2)`, degree 2, at `t = 1`). Values and derivatives there are those
+/// of that span's polynomial, for every evaluator of the crate.
 ///
 /// # Examples
 /// ```
@@ -46,7 +50,11 @@ impl BSplineBasis {
     /// for a knot repeated more than `p + 1` times; [`Error::EmptyInterval`] if the domain
     /// `[t_p, t_{n+1}]` is empty.
     pub fn try_new(knots: KnotVector, degree: usize) -> Result<Self> {
-        let needed = 2 * (degree + 1);
+        // 2(p + 1) knots are needed; a degree whose count overflows cannot have them
+        let needed = degree
+            .checked_add(1)
+            .and_then(|order| order.checked_mul(2))
+            .unwrap_or(usize::MAX);
         if knots.len() < needed {
             return Err(Error::TooFewKnots {
                 needed,
@@ -109,26 +117,38 @@ impl BSplineBasis {
         (t[self.degree], t[t.len() - self.degree - 1])
     }
 
-    /// The span `ℓ` with `t_ℓ ≤ t < t_{ℓ+1}`, `p ≤ ℓ ≤ n`, holding `t` (*The NURBS Book* A2.1).
-    /// The right end `b` belongs to the last span; points outside `[a, b]` go to the nearest
-    /// end span (evaluation there extrapolates that span's polynomial).
+    /// The span `ℓ` with `t_ℓ ≤ t < t_{ℓ+1}`, `p ≤ ℓ ≤ n`, holding `t` (*The NURBS Book* A2.1),
+    /// always a non-empty one (`t_ℓ < t_{ℓ+1}`). At and beyond the right end `b` it is the last
+    /// span with `t_ℓ < b` (the left limit, see [`BSplineBasis`]); below `a` the first
+    /// non-empty span. Evaluation outside `[a, b]` extrapolates that span's polynomial.
     pub fn find_span(&self, t: f64) -> usize {
         let k = self.knots.knots();
+        let p = self.degree;
         let n = self.len() - 1;
-        // the last ℓ in [p, n] with t_ℓ ≤ t: a non-empty span, since t_{ℓ+1} > t_ℓ unless
-        // ℓ = p (t below the domain or at a), and t_n < t_{n+1} = b because no knot repeats
-        // more than p + 1 times
-        let span = self.degree + k[self.degree + 1..=n].partition_point(|&x| x <= t);
-        // left of an empty first span (a knot of multiplicity p + 1 at a = t_{p+1}, with
-        // t_p = a too): move to the first non-empty one
+        let b = k[n + 1];
+        if t >= b {
+            // the last ℓ ≤ n with t_ℓ < b (ℓ = p qualifies: t_p = a < b), so t_{ℓ+1} ≥ b > t_ℓ
+            return p + k[p + 1..=n].partition_point(|&x| x < b);
+        }
+        // the last ℓ in [p, n] with t_ℓ ≤ t: t_{ℓ+1} > t ≥ t_ℓ, a non-empty span, unless t is
+        // below the domain and the first span is empty (a = t_p = t_{p+1}): then the first
+        // non-empty one
+        let span = p + k[p + 1..=n].partition_point(|&x| x <= t);
         (span..=n).find(|&s| k[s] < k[s + 1]).unwrap_or(span)
     }
 
     /// The `p + 1` basis functions that may be non-zero on span `span`,
-    /// `N_{span−p,p}(t), …, N_{span,p}(t)`, written into `out` (*The NURBS Book* A2.2: the
-    /// triangular scheme of the slides computed in place, no `0/0` can occur).
+    /// `N_{span−p,p}(t), …, N_{span,p}(t)`, written into `out`.
     ///
-    /// Generic over the number type: at a dual number `t + ε` it yields the derivatives too.
+    /// Generic over the number type: at a dual number `t = t₀ + δ` (`δ` its derivative part)
+    /// it yields the derivatives too. Values come from the triangular scheme of *The NURBS
+    /// Book* A2.2 (the slides' recurrence computed in place; no `0/0` can occur). For a dual
+    /// number the derivatives `N⁽ᵏ⁾(t₀)`, `k ≤ min(p, D::NDERIV)`, come from the derivative
+    /// recurrence A2.3 at the real part, and the result is the span polynomial's exact Taylor
+    /// expansion `Σₖ N⁽ᵏ⁾(t₀) δᵏ / k!` (exact: `δ^{NDERIV+1} = 0`). Differentiating through
+    /// the value recurrence instead would lose about `log₁₀(gap⁻¹)` digits where knots nearly
+    /// coincide (knots `.5, .5 + 10⁻⁹`: 8 digits of `N″`); A2.3 divides only by knot
+    /// differences of the lower-degree supports and keeps full accuracy.
     ///
     /// # Panics
     /// If `out.len() != p + 1` or `span` is not in `p ..= n`.
@@ -142,12 +162,31 @@ impl BSplineBasis {
         assert_eq!(out.len(), p + 1, "one slot per non-zero basis function");
         assert!(span >= p && span < self.len(), "span {span} out of range");
         let k = self.knots.knots();
-        // the same scheme for every degree; a constant degree lets the compiler unroll it
-        match p {
-            1 => triangle(k, span, 1, t, out),
-            2 => triangle(k, span, 2, t, out),
-            3 => triangle(k, span, 3, t, out),
-            _ => triangle(k, span, p, t, out),
+        if D::NDERIV == 0 {
+            // plain numbers: values only; a constant degree lets the compiler unroll it
+            match p {
+                1 => triangle(k, span, 1, t, out),
+                2 => triangle(k, span, 2, t, out),
+                3 => triangle(k, span, 3, t, out),
+                _ => triangle(k, span, p, t, out),
+            }
+            return;
+        }
+        let t0 = t.re();
+        let order = p.min(D::NDERIV);
+        let ders = derivatives_on_span(k, span, p, t0, order);
+        let delta = t - t0;
+        let mut factorial = vec![1.0; order + 1];
+        for j in 1..=order {
+            factorial[j] = factorial[j - 1] * j as f64;
+        }
+        for (j, slot) in out.iter_mut().enumerate() {
+            // Horner in δ: Σₖ N⁽ᵏ⁾ δᵏ / k!
+            let mut acc = D::from(ders[order][j] / factorial[order]);
+            for q in (0..order).rev() {
+                acc = acc * delta + ders[q][j] / factorial[q];
+            }
+            *slot = acc;
         }
     }
 
@@ -175,8 +214,33 @@ impl BSplineBasis {
     /// assert_eq!(d, vec![[0.5, -1.0, 0.0], [0.5, 1.0, 0.0]]);
     /// ```
     pub fn nonzero_derivatives(&self, t: f64) -> (usize, Vec<[f64; 3]>) {
-        let (span, n) = self.nonzero(Dual2_64::from_re(t).derivative());
-        (span, n.into_iter().map(|d| [d.re, d.v1, d.v2]).collect())
+        let span = self.find_span(t);
+        let d = derivatives_on_span(self.knots.knots(), span, self.degree, t, 2);
+        (
+            span,
+            (0..=self.degree)
+                .map(|j| [d[0][j], d[1][j], d[2][j]])
+                .collect(),
+        )
+    }
+
+    /// The span holding `t` and `N⁽ᵏ⁾(t)` for `k = 0 … order` of its `p + 1` non-zero
+    /// functions (`result[k][j]` for `N_{span−p+j}`; zero rows for `k > p`), by the
+    /// derivative recurrence of *The NURBS Book* A2.3.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] if `order` exceeds [`crate::error::MAX_ELEMENTS`].
+    pub fn derivatives(&self, t: f64, order: usize) -> Result<(usize, Vec<Vec<f64>>)> {
+        crate::error::size_product(
+            "derivative rows × functions",
+            order.saturating_add(1),
+            self.degree + 1,
+        )?;
+        let span = self.find_span(t);
+        Ok((
+            span,
+            derivatives_on_span(self.knots.knots(), span, self.degree, t, order),
+        ))
     }
 
     /// All `n + 1` basis functions at `t` (zeros outside the span), by the one-pass evaluator.
@@ -192,42 +256,129 @@ impl BSplineBasis {
     /// `N_{i,q}(t) = (t − tᵢ)/(t_{i+q} − tᵢ) N_{i,q−1}(t) + (t_{i+q+1} − t)/(t_{i+q+1} − t_{i+1}) N_{i+1,q−1}(t)`,
     ///
     /// with `0/0 = 0` (a term whose knot difference is zero is dropped) and the right-end rule
-    /// of [`BSplineBasis`]. Exponential in `q`: the reference the fast evaluator is tested
-    /// against, not for production use.
+    /// of [`BSplineBasis`] (at `t = b` exactly, `N_{ℓ,0} = 1` on the last non-empty span
+    /// only). The reference the one-pass evaluator is tested against: the recurrence is
+    /// evaluated level by level (`N_{i..=i+q, 0}`, then degree 1, …), `O(q²)` and without
+    /// recursion. Its derivatives at a dual number are those of the recurrence itself and lose
+    /// digits where knots nearly coincide (see [`BSplineBasis::nonzero_into`]); it is a
+    /// reference for values.
     ///
     /// # Panics
     /// If `i + q + 1` exceeds the last knot index.
     pub fn cox_de_boor<D: DualNum<Primitive = f64> + Copy>(&self, i: usize, q: usize, t: D) -> D {
         let k = self.knots.knots();
+        let last = i.checked_add(q).and_then(|s| s.checked_add(1));
         assert!(
-            i + q + 1 < k.len(),
-            "N_{{{i},{q}}} needs knot {}",
-            i + q + 1
+            last.is_some_and(|l| l < k.len()),
+            "N_{{{i},{q}}} needs knot i + q + 1, beyond the last knot index {}",
+            k.len() - 1
         );
-        if q == 0 {
-            let x = t.re();
-            let b = self.domain().1;
-            // At the right end b exactly, the last non-empty span is closed on the right and no
-            // other N_{i,0} is 1 (for a clamped end the half-open rule would give all zeros;
-            // for an unclamped one it would pick the span [b, t_{n+2}) outside the domain).
-            let one = if x.total_cmp(&b).is_eq() {
-                i == self.find_span(b)
-            } else {
-                k[i] <= x && x < k[i + 1]
-            };
-            return if one { D::one() } else { D::zero() };
+        let x = t.re();
+        let b = self.domain().1;
+        let end_span = self.find_span(b);
+        // level 0: N_{i+j,0}, j = 0 … q. At the right end b exactly, the last non-empty span
+        // is closed on the right and no other N_{·,0} is 1 (for a clamped end the half-open
+        // rule would give all zeros; where b is repeated, an empty span).
+        let mut level: Vec<D> = (i..=i + q)
+            .map(|m| {
+                let one = if x.total_cmp(&b).is_eq() {
+                    m == end_span
+                } else {
+                    k[m] <= x && x < k[m + 1]
+                };
+                if one {
+                    D::one()
+                } else {
+                    D::zero()
+                }
+            })
+            .collect();
+        for d in 1..=q {
+            // N_{m,d} for m = i … i + q − d from N_{m,d−1} and N_{m+1,d−1}
+            for j in 0..=q - d {
+                let m = i + j;
+                let mut value = D::zero();
+                let d1 = k[m + d] - k[m];
+                if d1 > 0.0 {
+                    value += (t - k[m]) / d1 * level[j];
+                }
+                let d2 = k[m + d + 1] - k[m + 1];
+                if d2 > 0.0 {
+                    value += (-t + k[m + d + 1]) / d2 * level[j + 1];
+                }
+                level[j] = value;
+            }
         }
-        let mut value = D::zero();
-        let d1 = k[i + q] - k[i];
-        if d1 > 0.0 {
-            value += (t - k[i]) / d1 * self.cox_de_boor(i, q - 1, t);
-        }
-        let d2 = k[i + q + 1] - k[i + 1];
-        if d2 > 0.0 {
-            value += (-t + k[i + q + 1]) / d2 * self.cox_de_boor(i + 1, q - 1, t);
-        }
-        value
+        level[0]
     }
+}
+
+/// `N⁽ᵏ⁾(t)` for `k = 0 … order` of the `p + 1` functions that may be non-zero on span `ℓ`
+/// (`ders[k][j]` for `N_{ℓ−p+j,p}`), by *The NURBS Book* A2.3 (`DersBasisFuns`): the
+/// triangle of A2.2 keeps the lower-degree values `N_{·,p−k}` and the knot differences, and
+/// the `k`-th derivative is `p!/(p−k)! Σⱼ a_{k,j} N_{ℓ−p+k+j… , p−k}` with the coefficients
+/// `a_{k,j}` formed by differences over knot spans of the lower-degree supports. Knot
+/// differences are taken directly from the knots (not as sums of `t − tᵢ` terms). Rows
+/// `k > p` are zero.
+fn derivatives_on_span(k: &[f64], span: usize, p: usize, t: f64, order: usize) -> Vec<Vec<f64>> {
+    // ndu[j][r], r ≤ j: lower triangle holds knot differences, upper (r > j ... ) basis values:
+    // ndu[r][j] = N_{ℓ−j+r, j}(t) for r ≤ j, ndu[j][r] = t_{ℓ+r+1} − t_{ℓ+1+r−j} for r < j
+    let mut ndu = vec![vec![0.0; p + 1]; p + 1];
+    ndu[0][0] = 1.0;
+    for j in 1..=p {
+        let mut saved = 0.0;
+        for r in 0..j {
+            let right = k[span + r + 1] - t;
+            let left = t - k[span + 1 + r - j];
+            ndu[j][r] = k[span + r + 1] - k[span + 1 + r - j];
+            let temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right * temp;
+            saved = left * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    let mut ders = vec![vec![0.0; p + 1]; order + 1];
+    for (j, d) in ders[0].iter_mut().enumerate() {
+        *d = ndu[j][p];
+    }
+    let top = order.min(p);
+    let mut a = [vec![0.0; p + 1], vec![0.0; p + 1]];
+    for r in 0..=p {
+        let (mut s1, mut s2) = (0, 1);
+        a[0][0] = 1.0;
+        for kk in 1..=top {
+            let mut d = 0.0;
+            let rk = r as isize - kk as isize;
+            let pk = p - kk;
+            if r >= kk {
+                let rk = rk as usize;
+                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            let j1: usize = if rk >= -1 { 1 } else { (-rk) as usize };
+            let j2: usize = if r <= pk + 1 { kk - 1 } else { p - r };
+            for j in j1..=j2 {
+                let idx = (rk + j as isize) as usize;
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
+                d += a[s2][j] * ndu[idx][pk];
+            }
+            if r <= pk {
+                a[s2][kk] = -a[s1][kk - 1] / ndu[pk + 1][r];
+                d += a[s2][kk] * ndu[r][pk];
+            }
+            ders[kk][r] = d;
+            std::mem::swap(&mut s1, &mut s2);
+        }
+    }
+    // multiply by p!/(p−k)!
+    let mut factor = p as f64;
+    for (kk, row) in ders.iter_mut().enumerate().take(top + 1).skip(1) {
+        for v in row.iter_mut() {
+            *v *= factor;
+        }
+        factor *= (p - kk) as f64;
+    }
+    ders
 }
 
 /// The triangular scheme of *The NURBS Book* A2.2 on span `ℓ = span` for degree `p`: the

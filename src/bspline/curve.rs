@@ -107,12 +107,23 @@ impl<const N: usize> BSplineCurve<N> {
     /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + ε`
     /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
     /// degrees evaluate the basis at every point.
+    ///
+    /// The power form is used on a span only where it is as accurate as the basis form:
+    /// its coefficients must be finite and `Σₖ ‖cₖ‖ wᵏ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` over the
+    /// span's width `w` and control points (see [`horner::safe`]); elsewhere (control points
+    /// near the overflow threshold, say) the span is evaluated point by point as
+    /// [`ParametricCurve::eval`] does.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        let p = self.basis.degree();
         walk_spans(
             &self.basis,
             ts,
             out,
-            |span, t0| horner::taylor(&self.eval_on_span(span, horner::seed(t0))),
+            |span, t0, width| {
+                let c = horner::taylor(&self.eval_on_span(span, horner::seed(t0)));
+                let scale = horner::max_norm(&self.points[span - p..=span]);
+                horner::safe(&c, width, scale).then_some(c)
+            },
             horner::eval,
             |span, t| self.eval_on_span(span, t),
         );
@@ -132,13 +143,15 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
 }
 
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
-/// into `out` (cleared first): for degree ≤ 3, `piece(ℓ, t_ℓ)` forms span `ℓ`'s data once
-/// and `at(piece, t − t_ℓ)` evaluates each point; above, `direct(ℓ, t)` evaluates each point.
+/// into `out` (cleared first): for degree ≤ 3, `piece(ℓ, t_ℓ, w)` forms span `ℓ`'s data once
+/// (`w` the span's width), and `at(piece, t − t_ℓ)` evaluates each point; where `piece`
+/// declines (`None`: its fast form would lose accuracy) and above degree 3, `direct(ℓ, t)`
+/// evaluates each point.
 pub(crate) fn walk_spans<T, P>(
     basis: &BSplineBasis,
     ts: &[f64],
     out: &mut Vec<T>,
-    piece: impl Fn(usize, f64) -> P,
+    piece: impl Fn(usize, f64, f64) -> Option<P>,
     at: impl Fn(&P, f64) -> T,
     direct: impl Fn(usize, f64) -> T,
 ) {
@@ -146,12 +159,16 @@ pub(crate) fn walk_spans<T, P>(
     out.reserve(ts.len());
     let mut cursor = SpanCursor::new(basis);
     if basis.degree() <= horner::TAYLOR_DEGREE {
-        let mut data = piece(cursor.span(), cursor.start());
+        let form = |c: &SpanCursor| piece(c.span(), c.start(), c.width());
+        let mut data = form(&cursor);
         out.extend(ts.iter().map(|&t| {
             if cursor.advance(t) {
-                data = piece(cursor.span(), cursor.start());
+                data = form(&cursor);
             }
-            at(&data, t - cursor.start())
+            match &data {
+                Some(d) => at(d, t - cursor.start()),
+                None => direct(cursor.span(), t),
+            }
         }));
     } else {
         out.extend(ts.iter().map(|&t| {
@@ -198,6 +215,11 @@ impl<'a> SpanCursor<'a> {
     /// The knot `t_ℓ` where the current span starts.
     fn start(&self) -> f64 {
         self.lo
+    }
+
+    /// The width `t_{ℓ+1} − t_ℓ` of the current span.
+    fn width(&self) -> f64 {
+        self.hi - self.lo
     }
 
     /// Moves to the span of `t` (as [`BSplineBasis::find_span`]); `true` if it changed.

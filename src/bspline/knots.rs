@@ -1,6 +1,6 @@
 //! Knot vectors (extended partitions), validated once on construction (seed 001).
 
-use crate::error::{finite, Error, Result};
+use crate::error::{derived, finite, size, size_sum, Error, Result};
 
 /// A knot vector `t₀ ≤ t₁ ≤ … ≤ t_L` (the slides' *partizione estesa*, seed 001): finite,
 /// non-decreasing, at least two knots and not all equal.
@@ -49,8 +49,12 @@ impl KnotVector {
     /// # Errors
     /// [`Error::TooFewKnots`] for fewer than 2 knots, [`Error::NonFinite`] for a NaN or
     /// infinite knot, [`Error::KnotsNotSorted`] if a knot is smaller than its predecessor,
-    /// [`Error::EmptyInterval`] if all knots are equal.
+    /// [`Error::EmptyInterval`] if all knots are equal; [`Error::Overflow`] if the width
+    /// `t_L − t₀` overflows; [`Error::GapTooSmall`] for two consecutive distinct knots closer
+    /// than `f64::MIN_POSITIVE` (the basis divides by knot differences); [`Error::TooLarge`]
+    /// beyond [`crate::error::MAX_ELEMENTS`] knots.
     pub fn try_new(knots: Vec<f64>) -> Result<Self> {
+        size("knots", knots.len())?;
         if knots.len() < 2 {
             return Err(Error::TooFewKnots {
                 needed: 2,
@@ -74,6 +78,12 @@ impl KnotVector {
                 start: first,
                 end: last,
             });
+        }
+        derived("knot vector width t_L − t₀", last - first)?;
+        for i in 1..knots.len() {
+            if knots[i] > knots[i - 1] {
+                crate::domain::gap("knot vector", i, knots[i - 1], knots[i])?;
+            }
         }
         Ok(Self { knots })
     }
@@ -112,6 +122,7 @@ impl KnotVector {
         if order == 0 {
             return Err(Error::ZeroOrder);
         }
+        size("order of the extended partition", order)?;
         if interior.len() != multiplicities.len() {
             return Err(Error::CountMismatch {
                 what: "multiplicities (one per interior breakpoint)",
@@ -139,6 +150,12 @@ impl KnotVector {
                 max: order,
             });
         }
+        // 2m + K knots, checked before anything is allocated
+        let total = multiplicities
+            .iter()
+            .try_fold(2 * order, |acc, &m| acc.checked_add(m))
+            .unwrap_or(usize::MAX);
+        size("knots of the extended partition (2m + K)", total)?;
         let outer = |start: f64, sign: f64| -> Result<Vec<f64>> {
             match ends {
                 EndKnots::Clamped => Ok(vec![start; order - 1]),
@@ -149,7 +166,11 @@ impl KnotVector {
                             value: h,
                         });
                     }
-                    Ok((1..order).map(|k| start + sign * k as f64 * h).collect())
+                    (1..order)
+                        .map(|k| {
+                            derived("outer knot a − kh or b + kh", start + sign * k as f64 * h)
+                        })
+                        .collect()
                 }
             }
         };
@@ -169,16 +190,20 @@ impl KnotVector {
     /// spaced interior knots (`linspace`, both ends included, as MATLAB).
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] if `count ≤ degree`; the errors of
-    /// [`KnotVector::extended_partition`].
+    /// [`Error::TooFewPoints`] if `count ≤ degree`; [`Error::TooLarge`] if the knot count
+    /// `count + degree + 1` exceeds [`crate::error::MAX_ELEMENTS`]; the errors of
+    /// [`KnotVector::extended_partition`] (repeated interior knots when `count` is too large
+    /// for the width of `[a, b]` at `f64` resolution are [`Error::NotIncreasing`]).
     pub fn open_uniform(degree: usize, count: usize, a: f64, b: f64) -> Result<Self> {
+        let order = size_sum("degree + 1 of the open uniform knot vector", degree, 1)?;
         if count <= degree {
             return Err(Error::TooFewPoints {
                 what: "control points of the open uniform knot vector",
-                needed: degree + 1,
+                needed: order,
                 got: count,
             });
         }
+        size_sum("knots of the open uniform knot vector", count, order)?;
         let pieces = count - degree;
         crate::domain::Interval::named("open uniform knot vector", a, b)?;
         let nodes = crate::domain::linspace(a, b, pieces + 1);
@@ -188,7 +213,7 @@ impl KnotVector {
             b,
             interior,
             &vec![1; interior.len()],
-            degree + 1,
+            order,
             EndKnots::Clamped,
         )
     }

@@ -1,7 +1,7 @@
 //! The bicubic Hermite patch `X(s, t) = H(s)ᵀ C H(t)` of seed 000 §1–2 and §5.
 
 use crate::domain::Rect;
-use crate::error::{samples, Result};
+use crate::error::{finite_points, samples, Error, Result};
 use crate::grid::Grid;
 use crate::hermite::basis::hermite_basis;
 use crate::surface::{ParametricSurface, Partials, SurfaceDerivatives};
@@ -32,8 +32,26 @@ const SLOPE: [usize; 2] = [1, 2];
 
 impl HermitePatch {
     /// A patch from its Hermite matrix `C` (`c[i][j]`: row `i` indexes s, column `j` t).
+    ///
+    /// # Panics
+    /// On an invalid matrix; see [`HermitePatch::try_from_matrix`].
     pub fn from_matrix(c: Net) -> Self {
+        Self::try_from_matrix(c).expect("invalid Hermite matrix")
+    }
+
+    /// A patch from a matrix already validated (the nets of a [`crate::HermiteSpline`]).
+    pub(crate) fn from_valid_matrix(c: Net) -> Self {
         Self { c }
+    }
+
+    /// A patch from its Hermite matrix `C`, checked.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite entry, [`Error::CoordinateTooLarge`] beyond
+    /// [`crate::tensor::NET_LIMIT`].
+    pub fn try_from_matrix(c: Net) -> Result<Self> {
+        crate::tensor::check_net("Hermite matrix entry", &c)?;
+        Ok(Self { c })
     }
 
     /// The patch interpolating corner data over a rectangle of widths `Δu × Δv`.
@@ -43,28 +61,88 @@ impl HermitePatch {
     /// gives `X_s = Δu X_u`, `X_t = Δv X_v`, `X_st = Δu Δv X_uv`, which is the scaling of the
     /// matrix `C⁽ⁱʲ⁾` in seed 000 §5 and Codice 13. (The printed `C⁽ⁱʲ⁾` shows `d⁽⁰¹⁾` in
     /// entries (2,4) and (3,4); Codice 13 uses the s-derivative, as interpolation requires.)
+    ///
+    /// # Panics
+    /// On invalid corner data; see [`HermitePatch::try_from_corners`].
     pub fn from_corners(corners: &[[Partials; 2]; 2], du: f64, dv: f64) -> Self {
+        Self::try_from_corners(corners, du, dv).expect("invalid Hermite corner data")
+    }
+
+    /// [`HermitePatch::from_corners`], checked: the widths and every entry of the resulting
+    /// matrix `C` must be finite, so the patch evaluates finitely on `[0, 1]²`.
+    ///
+    /// # Errors
+    /// [`Error::NotPositive`] unless `du` and `dv` are positive and finite; [`Error::NonFinite`]
+    /// for a NaN or infinite corner datum; [`Error::CoordinateTooLarge`] for an entry of `C`
+    /// (after the scaling by `Δu`, `Δv`) beyond [`crate::error::MAX_COORDINATE`].
+    pub fn try_from_corners(corners: &[[Partials; 2]; 2], du: f64, dv: f64) -> Result<Self> {
+        for (what, w) in [("patch width Δu", du), ("patch width Δv", dv)] {
+            if !(w.is_finite() && w > 0.0) {
+                return Err(Error::NotPositive { what, value: w });
+            }
+        }
         let mut c = [[Vector3::zeros(); 4]; 4];
         for (a, row) in corners.iter().enumerate() {
             for (b, p) in row.iter().enumerate() {
+                for v in [p.point, p.ds, p.dt, p.dst] {
+                    finite_points("Hermite corner datum", &[v]).map_err(|e| match e {
+                        Error::CoordinateTooLarge { .. } => e,
+                        _ => Error::NonFinite {
+                            what: "Hermite corner datum",
+                            value: v
+                                .iter()
+                                .copied()
+                                .find(|x| !x.is_finite())
+                                .unwrap_or(f64::NAN),
+                        },
+                    })?;
+                }
                 c[VALUE[a]][VALUE[b]] = p.point;
                 c[VALUE[a]][SLOPE[b]] = p.dt * dv;
                 c[SLOPE[a]][VALUE[b]] = p.ds * du;
                 c[SLOPE[a]][SLOPE[b]] = p.dst * (du * dv);
             }
         }
-        Self { c }
+        for row in &c {
+            finite_points("Hermite matrix entry (scaled corner datum)", row)?;
+        }
+        Ok(Self { c })
     }
 
     /// The patch interpolating `surface` over `rect` (Codice 4 on `[0, 1]²`, Codice 13 on any
     /// rectangle): corner partials are exact (hyper-dual numbers), scaled by `Δu`, `Δv`.
+    ///
+    /// # Panics
+    /// If the surface is not finite at a corner; see [`HermitePatch::try_from_surface`].
     pub fn from_surface<S: SurfaceDerivatives + ?Sized>(surface: &S, rect: &Rect) -> Self {
-        let corner = |u, v| surface.partials(u, v);
+        Self::try_from_surface(surface, rect).expect("surface not finite at a patch corner")
+    }
+
+    /// [`HermitePatch::from_surface`], checked.
+    ///
+    /// # Errors
+    /// [`Error::NonFiniteSurface`] if a point or partial at a corner is NaN or infinite; the
+    /// errors of [`HermitePatch::try_from_corners`].
+    pub fn try_from_surface<S: SurfaceDerivatives + ?Sized>(
+        surface: &S,
+        rect: &Rect,
+    ) -> Result<Self> {
+        let corner = |u, v| -> Result<Partials> {
+            let p = surface.partials(u, v);
+            if [p.point, p.ds, p.dt, p.dst]
+                .iter()
+                .all(|x| x.iter().all(|c| c.is_finite()))
+            {
+                Ok(p)
+            } else {
+                Err(Error::NonFiniteSurface { s: u, t: v })
+            }
+        };
         let (ua, ub, va, vb) = (rect.s.start(), rect.s.end(), rect.t.start(), rect.t.end());
-        Self::from_corners(
+        Self::try_from_corners(
             &[
-                [corner(ua, va), corner(ua, vb)],
-                [corner(ub, va), corner(ub, vb)],
+                [corner(ua, va)?, corner(ua, vb)?],
+                [corner(ub, va)?, corner(ub, vb)?],
             ],
             rect.s.width(),
             rect.t.width(),
@@ -90,8 +168,10 @@ impl HermitePatch {
     /// row `i` ↔ `sᵢ`, with the basis rows computed once per grid line.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`.
+    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`Error::TooLarge`] if
+    /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
+        crate::error::size_product("patch samples ns × nt", ns, nt)?;
         let rows = local_basis_samples(samples("ns", ns)?, hermite_basis);
         let cols = local_basis_samples(samples("nt", nt)?, hermite_basis);
         let mut out = Vec::new();

@@ -36,45 +36,82 @@ pub struct HermiteSpline {
 impl HermiteSpline {
     /// Interpolates `surface` on the partitions `u` (s direction) and `v` (t direction).
     /// The partials are computed once per node and shared by the patches that meet there.
+    ///
+    /// # Panics
+    /// On a surface that is not finite at a node, or a grid too large; see
+    /// [`HermiteSpline::try_from_surface`].
     pub fn from_surface<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         u: Partition,
         v: Partition,
     ) -> Self {
-        let nodes = partials_on_grid(surface, u.nodes(), v.nodes());
-        Self::from_node_partials(&nodes, u, v)
+        Self::try_from_surface(surface, u, v).expect("invalid Hermite spline surface")
+    }
+
+    /// [`HermiteSpline::from_surface`], checked: every node's point and partials must be
+    /// finite and every patch matrix valid, so the spline evaluates finitely on its domain.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] if the `(n + 1)(m + 1)` nodes exceed
+    /// [`crate::error::MAX_ELEMENTS`]; [`Error::NonFiniteSurface`] at the first node where the
+    /// surface is NaN or infinite; the errors of [`HermitePatch::try_from_corners`].
+    pub fn try_from_surface<S: SurfaceDerivatives + Sync + ?Sized>(
+        surface: &S,
+        u: Partition,
+        v: Partition,
+    ) -> Result<Self> {
+        let nodes = partials_on_grid(surface, u.nodes(), v.nodes())?;
+        Self::try_from_node_partials(&nodes, u, v)
     }
 
     /// Builds the patches from partials given at every node (`nodes[(i, j)]` at `(uᵢ, vⱼ)`).
     ///
     /// # Panics
-    /// If the grid is not `(n + 1) × (m + 1)`.
+    /// If the grid is not `(n + 1) × (m + 1)` or its data are invalid; see
+    /// [`HermiteSpline::try_from_node_partials`].
     pub fn from_node_partials(nodes: &Grid<Partials>, u: Partition, v: Partition) -> Self {
+        Self::try_from_node_partials(nodes, u, v).expect("invalid node partials")
+    }
+
+    /// [`HermiteSpline::from_node_partials`], checked.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless the grid is `(n + 1) × (m + 1)`; the errors of
+    /// [`HermitePatch::try_from_corners`] for any patch.
+    pub fn try_from_node_partials(
+        nodes: &Grid<Partials>,
+        u: Partition,
+        v: Partition,
+    ) -> Result<Self> {
         let (n, m) = (u.len(), v.len());
-        assert_eq!(
-            (nodes.rows(), nodes.cols()),
-            (n + 1, m + 1),
-            "node grid shape"
-        );
+        if (nodes.rows(), nodes.cols()) != (n + 1, m + 1) {
+            return Err(Error::ShapeMismatch {
+                left_rows: nodes.rows(),
+                left_cols: nodes.cols(),
+                right_rows: n + 1,
+                right_cols: m + 1,
+            });
+        }
         let mut nets = Vec::with_capacity(n * m);
         for i in 0..n {
             for j in 0..m {
                 let corner = |a: usize, b: usize| *nodes.get(i + a, j + b);
-                let patch = HermitePatch::from_corners(
+                let patch = HermitePatch::try_from_corners(
                     &[[corner(0, 0), corner(0, 1)], [corner(1, 0), corner(1, 1)]],
                     u.interval(i).width(),
                     v.interval(j).width(),
-                );
+                )?;
                 nets.push(*patch.matrix());
             }
         }
-        Self { u, v, nets }
+        Ok(Self { u, v, nets })
     }
 
     /// `n × m` uniform patches of `rect` (the report's §6 experiments: `linspace(0, 1, n+1)`).
     ///
     /// # Errors
-    /// [`Error::ZeroPatches`] if `n` or `m` is 0.
+    /// [`Error::ZeroPatches`] if `n` or `m` is 0; the errors of [`Partition::uniform`] and
+    /// [`HermiteSpline::try_from_surface`].
     pub fn uniform<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         rect: &Rect,
@@ -83,7 +120,8 @@ impl HermiteSpline {
     ) -> Result<Self> {
         let u = Partition::uniform(rect.s.start(), rect.s.end(), n)?;
         let v = Partition::uniform(rect.t.start(), rect.t.end(), m)?;
-        Ok(Self::from_surface(surface, u, v))
+        crate::error::size_product("Hermite spline nodes", u.nodes().len(), v.nodes().len())?;
+        Self::try_from_surface(surface, u, v)
     }
 
     /// The u partition.
@@ -111,7 +149,7 @@ impl HermiteSpline {
             i < n && j < m,
             "patch index ({i}, {j}) out of range {n}x{m}"
         );
-        HermitePatch::from_matrix(self.nets[i * m + j])
+        HermitePatch::from_valid_matrix(self.nets[i * m + j])
     }
 
     /// The rectangle of patch `(i, j)`.
@@ -145,7 +183,8 @@ impl HermiteSpline {
     /// computed once per grid line and the patch found once per sample.
     ///
     /// # Errors
-    /// As [`HermiteSpline::try_point`] for any sample.
+    /// As [`HermiteSpline::try_point`] for any sample; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`] samples.
     pub fn tabulate(&self, u_samples: &[f64], v_samples: &[f64]) -> Result<Grid<Vector3<f64>>> {
         let mut out = Vec::new();
         self.tabulate_into(u_samples, v_samples, &mut out)?;
@@ -163,6 +202,7 @@ impl HermiteSpline {
         v_samples: &[f64],
         out: &mut Vec<Vector3<f64>>,
     ) -> Result<()> {
+        crate::error::size_product("spline samples", u_samples.len(), v_samples.len())?;
         let rows = basis_samples("u", &self.u, u_samples)?;
         let cols = basis_samples("v", &self.v, v_samples)?;
         tabulate_pieces(&self.nets, self.v.len(), &rows, &cols, out);

@@ -5,6 +5,7 @@
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
+use crate::curve::check_domain;
 use crate::error::finite_points;
 use crate::error::{finite, Error, Result};
 use crate::interp::check_sites;
@@ -60,11 +61,18 @@ fn basis_row(basis: &BSplineBasis, x: f64, order: DerivativeOrder) -> Vec<f64> {
 /// `Nⱼ(xⱼ) ≠ 0` for every `j` (each site lies in the support of "its" basis function; de Boor,
 /// *A Practical Guide to Splines*, XIII). That condition is checked first and reported.
 ///
+/// Each row is divided by its largest entry before the solve (row equilibration: derivative
+/// rows scale like `h⁻ʳ`, and a tiny end interval would otherwise dominate the pivoting), and
+/// the solution is checked: every row of the equilibrated system must hold within
+/// [`crate::interp::RESIDUAL_TOLERANCE`] of the data scale `max(max |yᵢ|, max |bᵢ|)`.
+///
 /// # Errors
 /// [`Error::CountMismatch`] unless sites + conditions = basis functions and values match
 /// sites; [`Error::NonFinite`]; [`Error::RepeatedParameter`] / [`Error::NotIncreasing`] for
-/// unsorted sites; [`Error::SchoenbergWhitney`] if the condition fails (no extra conditions);
-/// [`Error::SingularSystem`] if the system is singular.
+/// unsorted sites; [`Error::OutOfDomain`] for a site or condition abscissa outside the
+/// basis domain; [`Error::SchoenbergWhitney`] if the condition fails (no extra conditions);
+/// [`Error::SingularSystem`] if the system is singular; [`Error::IllConditioned`] if the
+/// solution does not satisfy the system (the curve would miss its data).
 pub fn interpolate<const N: usize>(
     basis: BSplineBasis,
     sites: &[f64],
@@ -86,11 +94,16 @@ pub fn interpolate<const N: usize>(
             got: sites.len() + conditions.len(),
         });
     }
+    crate::error::size_product("collocation matrix entries", size, size)?;
     check_sites("collocation sites", sites)?;
+    let domain = basis.domain();
+    for &x in sites {
+        check_domain("collocation site", x, domain)?;
+    }
     finite_points("collocation value", values)?;
     for c in conditions {
         for &(x, w) in &c.terms {
-            finite("condition site", x)?;
+            check_domain("condition site", x, domain)?;
             finite("condition coefficient", w)?;
         }
         finite_points("condition value", &[c.value])?;
@@ -114,32 +127,77 @@ pub fn interpolate<const N: usize>(
         }
         rhs.push(c.value);
     }
-    let lu = a.lu();
-    let singular = Error::SingularSystem {
+    let singular = || Error::SingularSystem {
         what: "collocation system",
     };
+    // row equilibration: each row divided by its largest entry
+    for (i, b) in rhs.iter_mut().enumerate() {
+        let big = a.row(i).amax();
+        let big = crate::error::derived("collocation row entry", big)?;
+        if big == 0.0 {
+            return Err(singular());
+        }
+        a.row_mut(i).scale_mut(1.0 / big);
+        *b /= big;
+        crate::error::derived_points("equilibrated collocation right-hand side", &[*b])?;
+    }
+    let lu = a.clone().lu();
     let mut points = vec![SVector::<f64, N>::zeros(); size];
     for d in 0..N {
         let b = DVector::from_fn(size, |i, _| rhs[i][d]);
-        let x = lu.solve(&b).ok_or(singular.clone())?;
+        let x = lu.solve(&b).ok_or_else(singular)?;
         if x.iter().any(|v| !v.is_finite()) {
-            return Err(singular);
+            return Err(singular());
         }
         for (p, v) in points.iter_mut().zip(x.iter()) {
             p[d] = *v;
         }
     }
+    // the residual of every row, relative to the data scale
+    let scale = crate::horner::max_norm(values).max(crate::horner::max_norm(&rhs));
+    let residuals = (0..size).map(|i| {
+        let got = (0..size).fold(SVector::<f64, N>::zeros(), |acc, j| {
+            acc + points[j] * a[(i, j)]
+        });
+        (got - rhs[i]).amax()
+    });
+    crate::interp::accept_residual(
+        "B-spline collocation",
+        crate::interp::relative_residual(residuals, scale),
+    )?;
     BSplineCurve::try_new(basis, points)
 }
 
-/// Checks `Nⱼ(xⱼ) ≠ 0` for every `j` (sorted sites, one per basis function).
+/// Checks `Nⱼ(xⱼ) ≠ 0` for every `j` (sorted sites in the domain, one per basis function).
 ///
 /// # Errors
-/// [`Error::SchoenbergWhitney`] naming the first `j` that fails.
+/// [`Error::CountMismatch`] unless there is one site per basis function; the site checks of
+/// [`interpolate`] ([`Error::NonFinite`], [`Error::RepeatedParameter`],
+/// [`Error::NotIncreasing`], [`Error::OutOfDomain`]); [`Error::SchoenbergWhitney`] naming
+/// the first `j` that fails.
 pub fn schoenberg_whitney(basis: &BSplineBasis, sites: &[f64]) -> Result<()> {
+    if sites.len() != basis.len() {
+        return Err(Error::CountMismatch {
+            what: "Schoenberg–Whitney sites (one per basis function)",
+            expected: basis.len(),
+            got: sites.len(),
+        });
+    }
+    check_sites("Schoenberg–Whitney sites", sites)?;
+    let domain = basis.domain();
+    for &x in sites {
+        check_domain("Schoenberg–Whitney site", x, domain)?;
+    }
     let k = basis.knots().knots();
+    let p = basis.degree();
     for (j, &x) in sites.iter().enumerate() {
-        if basis.all(x)[j] <= 0.0 {
+        let (span, n) = basis.nonzero(x);
+        let value = if j + p >= span && j <= span {
+            n[j + p - span]
+        } else {
+            0.0
+        };
+        if value <= 0.0 {
             return Err(Error::SchoenbergWhitney {
                 index: j,
                 site: x,

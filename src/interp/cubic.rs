@@ -106,8 +106,12 @@ impl<const N: usize> CubicSpline<N> {
     /// [`Error::CountMismatch`] unless `x` and `y` have the same length;
     /// [`Error::TooFewPoints`] below 2 points (3 for periodic and anticyclic ends);
     /// [`Error::NonFinite`] for NaN or infinite data; [`Error::RepeatedParameter`] or
-    /// [`Error::NotIncreasing`] unless `x` strictly increases; [`Error::PeriodicEndsMismatch`]
-    /// for periodic ends with `y₀ ≠ y_n` (beyond [`PERIODIC_MATCH`]).
+    /// [`Error::NotIncreasing`] unless `x` strictly increases; [`Error::GapTooSmall`] for
+    /// abscissae closer than `f64::MIN_POSITIVE`; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`] points; [`Error::PeriodicEndsMismatch`] for periodic
+    /// ends with `y₀ ≠ y_n` (beyond [`PERIODIC_MATCH`]); [`Error::Overflow`] if a derived
+    /// slope, moment or coefficient overflows; [`Error::IllConditioned`] if the pieces do not
+    /// reproduce the data within [`crate::interp::RESIDUAL_TOLERANCE`].
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>], end: EndCondition<N>) -> Result<Self> {
         Self::build(x, y.to_vec(), end)
     }
@@ -120,12 +124,47 @@ impl<const N: usize> CubicSpline<N> {
             y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
         let m = moments(x, &y, &end)?;
-        Ok(Self {
+        let spline = Self {
             x: x.to_vec(),
             y,
             m,
             end,
-        })
+        };
+        spline.verify()?;
+        Ok(spline)
+    }
+
+    /// Checks what the build derived: every piece's coefficients are finite, and the piece
+    /// ending at each node reproduces the value there, `|sᵢ₋₁(xᵢ) − yᵢ| ≤`
+    /// [`crate::interp::RESIDUAL_TOLERANCE`] `· max |y|` (the value from the right, `aᵢ = yᵢ`,
+    /// is exact by construction). Together with finite coefficients this makes every
+    /// evaluation in the domain finite.
+    ///
+    /// # Errors
+    /// [`Error::Overflow`] for a non-finite coefficient (slopes `Δy/h` or moments that
+    /// overflow); [`Error::IllConditioned`] for a residual above the tolerance.
+    fn verify(&self) -> Result<()> {
+        let scale = horner::max_norm(&self.y);
+        let mut worst: f64 = 0.0;
+        for i in 0..self.x.len() - 1 {
+            let c = self.piece(i);
+            let h = self.x[i + 1] - self.x[i];
+            let size = horner::size(&c, h);
+            if !size.is_finite() {
+                return Err(Error::Overflow {
+                    what: "cubic spline piece coefficients (Σ |cₖ| hᵏ)",
+                    value: size,
+                });
+            }
+            let r = (horner::eval(&c, h) - self.y[i + 1]).amax();
+            if r.is_nan() || r > worst {
+                worst = r;
+            }
+        }
+        crate::interp::accept_residual(
+            "cubic spline",
+            crate::interp::relative_residual(std::iter::once(worst), scale),
+        )
     }
 
     /// The interpolating spline curve through `points` at parameters chosen by `param`

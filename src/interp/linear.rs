@@ -28,7 +28,8 @@ impl<const N: usize> PiecewiseLinear<N> {
     ///
     /// # Errors
     /// [`Error::CountMismatch`], [`Error::TooFewPoints`] (below 2), [`Error::NonFinite`],
-    /// [`Error::RepeatedParameter`], [`Error::NotIncreasing`].
+    /// [`Error::RepeatedParameter`], [`Error::NotIncreasing`], [`Error::GapTooSmall`],
+    /// [`Error::CoordinateTooLarge`]; [`Error::Overflow`] for a slope that overflows.
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
         if x.len() != y.len() {
             return Err(Error::CountMismatch {
@@ -46,6 +47,11 @@ impl<const N: usize> PiecewiseLinear<N> {
         }
         check_sites("piecewise linear abscissae", x)?;
         finite_points("piecewise linear value", y)?;
+        // the slopes evaluation uses must be representable
+        for k in 0..x.len() - 1 {
+            let slope = (y[k + 1] - y[k]) / (x[k + 1] - x[k]);
+            crate::error::derived_points("piecewise linear slope", &[slope])?;
+        }
         Ok(Self {
             x: x.to_vec(),
             y: y.to_vec(),

@@ -9,12 +9,50 @@ pub mod polynomial;
 
 use crate::error::{finite, Error, Result};
 
+/// The relative residual an interpolant may leave at its own data before it is refused:
+/// `max |s(xᵢ) − yᵢ| ≤ RESIDUAL_TOLERANCE · max |yᵢ|` (absolute when all data are 0), for
+/// every interpolation route of the crate (power basis, Lagrange, cubic splines, B-spline
+/// collocation). A well-conditioned problem leaves `≈ n ε`, about `10⁻¹⁵`; six orders of
+/// magnitude above that, a larger residual means the problem is too ill-conditioned for `f64`
+/// and [`Error::IllConditioned`] is returned instead of an interpolant that does not
+/// interpolate.
+pub const RESIDUAL_TOLERANCE: f64 = 1e-10;
+
+/// `max rᵢ / scale` (or `max rᵢ` when `scale = 0`), NaN-propagating.
+pub(crate) fn relative_residual(residuals: impl Iterator<Item = f64>, scale: f64) -> f64 {
+    let worst = residuals.fold(0.0, |m: f64, r| if r.is_nan() || r > m { r } else { m });
+    if scale > 0.0 {
+        worst / scale
+    } else {
+        worst
+    }
+}
+
+/// `Ok` if the relative residual is within [`RESIDUAL_TOLERANCE`].
+///
+/// # Errors
+/// [`Error::IllConditioned`] otherwise (NaN included).
+pub(crate) fn accept_residual(what: &'static str, residual: f64) -> Result<()> {
+    if residual <= RESIDUAL_TOLERANCE {
+        Ok(())
+    } else {
+        Err(Error::IllConditioned {
+            what,
+            residual,
+            tolerance: RESIDUAL_TOLERANCE,
+        })
+    }
+}
+
 /// Checks interpolation abscissae (or parameters): finite and strictly increasing.
 ///
 /// # Errors
-/// [`Error::NonFinite`]; [`Error::RepeatedParameter`] for two equal values;
-/// [`Error::NotIncreasing`] for a decrease.
+/// [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] values; [`Error::NonFinite`];
+/// [`Error::RepeatedParameter`] for two equal values; [`Error::NotIncreasing`] for a
+/// decrease; [`Error::GapTooSmall`] for two values closer than `f64::MIN_POSITIVE`;
+/// [`Error::Overflow`] if the whole width overflows.
 pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
+    crate::error::size(what, x.len())?;
     let mut prev = f64::NEG_INFINITY;
     for (index, &v) in x.iter().enumerate() {
         finite(what, v)?;
@@ -34,7 +72,13 @@ pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
                 }
             });
         }
+        if index > 0 {
+            crate::domain::gap(what, index, prev, v)?;
+        }
         prev = v;
+    }
+    if x.len() > 1 {
+        crate::domain::gap(what, x.len() - 1, x[0], x[x.len() - 1])?;
     }
     Ok(())
 }

@@ -35,12 +35,18 @@ impl Parametrization {
         }
     }
 
-    /// The parameters of `points`, `t₀ = 0`, `t_n = 1`, strictly increasing.
+    /// The parameters of `points`, `t₀ = 0`, `t_n = 1`, strictly increasing — checked on the
+    /// computed values, not only on the steps: a step below the rounding of the running sum
+    /// (a chord `10⁻²⁰` after one of length 1) would repeat a parameter. Coordinates near the
+    /// overflow or underflow thresholds are scaled first (see `chords`; the parameters are
+    /// scale-invariant).
     ///
     /// # Errors
-    /// [`Error::TooFewPoints`] for fewer than 2 points; [`Error::NonFinite`] for a NaN or
-    /// infinite coordinate; [`Error::RepeatedPoint`] if two consecutive points coincide under a
-    /// distance-based rule (their parameters would coincide).
+    /// [`Error::TooFewPoints`] for fewer than 2 points; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`] points; [`Error::NonFinite`] for a NaN or infinite
+    /// coordinate; [`Error::RepeatedPoint`] if two consecutive points coincide under a
+    /// distance-based rule; [`Error::RepeatedParameter`] if two computed parameters coincide
+    /// in `f64` (steps too unequal).
     pub fn parameters<const N: usize>(self, points: &[SVector<f64, N>]) -> Result<Vec<f64>> {
         if points.len() < 2 {
             return Err(Error::TooFewPoints {
@@ -49,11 +55,13 @@ impl Parametrization {
                 got: points.len(),
             });
         }
+        crate::error::size("points to parametrize", points.len())?;
         finite_points("point coordinate", points)?;
+        let scale = points.iter().map(|p| p.amax()).fold(0.0, f64::max);
         let steps: Vec<f64> = match self {
             Parametrization::Uniform => vec![1.0; points.len() - 1],
-            Parametrization::ChordLength => chords(points).collect(),
-            Parametrization::Centripetal => chords(points).map(f64::sqrt).collect(),
+            Parametrization::ChordLength => chords(points, scale).collect(),
+            Parametrization::Centripetal => chords(points, scale).map(f64::sqrt).collect(),
         };
         if let Some(index) = steps.iter().position(|&d| d <= 0.0) {
             return Err(Error::RepeatedPoint { index: index + 1 });
@@ -67,10 +75,29 @@ impl Parametrization {
             t.push(acc / total);
         }
         t.push(1.0);
+        if let Some(index) = (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+            return Err(Error::RepeatedParameter {
+                what: "computed parameters (a step is below the rounding of the total length)",
+                index,
+                value: t[index],
+            });
+        }
         Ok(t)
     }
 }
 
-fn chords<const N: usize>(points: &[SVector<f64, N>]) -> impl Iterator<Item = f64> + '_ {
-    points.windows(2).map(|w| (w[1] - w[0]).norm())
+/// Chord lengths `‖Pᵢ₊₁ − Pᵢ‖`, measured on the points divided by their largest coordinate
+/// `scale` when it lies outside `[10⁻¹⁵⁰, 10¹⁵⁰]` (there the squares in the norm could
+/// overflow or underflow; scaled differences are at most 2). Inside that range the points are
+/// used as given, so ordinary data get the same bits as an unscaled computation.
+fn chords<const N: usize>(
+    points: &[SVector<f64, N>],
+    scale: f64,
+) -> impl Iterator<Item = f64> + '_ {
+    let s = if scale > 0.0 && !(1e-150..=1e150).contains(&scale) {
+        scale
+    } else {
+        1.0
+    };
+    points.windows(2).map(move |w| (w[1] / s - w[0] / s).norm())
 }

@@ -23,11 +23,28 @@ fn check_data(x: &[f64], y: &[f64]) -> Result<()> {
             got: 0,
         });
     }
+    // the O(n²) work and storage of both forms
+    crate::error::size_product("interpolation nodes squared", x.len(), x.len())?;
     check_sites("interpolation nodes", x)?;
     for &v in y {
         finite("interpolation value", v)?;
     }
     Ok(())
+}
+
+/// The largest residual `max |p(xᵢ) − yᵢ|` of an interpolant relative to the data scale
+/// `max |yᵢ|` (absolute when all data are 0), checked against
+/// [`crate::interp::RESIDUAL_TOLERANCE`].
+///
+/// # Errors
+/// [`Error::IllConditioned`] above the tolerance or for a non-finite residual.
+fn check_residual(what: &'static str, x: &[f64], y: &[f64], p: impl Fn(f64) -> f64) -> Result<()> {
+    let scale = y.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+    let residual = crate::interp::relative_residual(
+        x.iter().zip(y).map(|(&xi, &yi)| (p(xi) - yi).abs()),
+        scale,
+    );
+    crate::interp::accept_residual(what, residual)
 }
 
 /// A polynomial in the power basis, `p(t) = Σⱼ aⱼ tʲ`.
@@ -43,27 +60,34 @@ impl PowerPolynomial {
     /// nodes (its condition number grows exponentially with the degree): see
     /// [`vandermonde_condition`] and prefer [`Lagrange`] for evaluation.
     ///
+    /// The result is checked: `p(xᵢ)` (Horner) must reproduce every `yᵢ` within
+    /// [`crate::interp::RESIDUAL_TOLERANCE`] of `max |yᵢ|`, else the system was too
+    /// ill-conditioned for `f64` and no polynomial is returned.
+    ///
     /// # Errors
     /// As the data checks ([`Error::CountMismatch`], [`Error::TooFewPoints`],
-    /// [`Error::NonFinite`], [`Error::RepeatedParameter`], [`Error::NotIncreasing`]);
-    /// [`Error::SingularSystem`] if the factorisation breaks down numerically.
+    /// [`Error::NonFinite`], [`Error::RepeatedParameter`], [`Error::NotIncreasing`],
+    /// [`Error::TooLarge`] beyond `√MAX_ELEMENTS` nodes); [`Error::Overflow`] if a power
+    /// `xᵢʲ` overflows; [`Error::SingularSystem`] if the factorisation breaks down
+    /// numerically; [`Error::IllConditioned`] if the solution misses the data.
     pub fn interpolate(x: &[f64], y: &[f64]) -> Result<Self> {
         check_data(x, y)?;
-        let v = vandermonde(x);
+        let v = vandermonde(x)?;
+        let singular = || Error::SingularSystem {
+            what: "Vandermonde system",
+        };
         let a = v
             .lu()
             .solve(&DVector::from_column_slice(y))
-            .ok_or(Error::SingularSystem {
-                what: "Vandermonde system",
-            })?;
+            .ok_or_else(singular)?;
         if a.iter().any(|c| !c.is_finite()) {
-            return Err(Error::SingularSystem {
-                what: "Vandermonde system",
-            });
+            return Err(singular());
         }
-        Ok(Self {
+        let p = Self {
             coeffs: a.iter().copied().collect(),
-        })
+        };
+        check_residual("Vandermonde interpolation", x, y, |t| p.eval(t))?;
+        Ok(p)
     }
 
     /// The coefficients `a₀ … a_n`.
@@ -81,23 +105,57 @@ impl PowerPolynomial {
 }
 
 /// The Vandermonde matrix `V_{ij} = xᵢʲ`, `j = 0 … n`.
-fn vandermonde(x: &[f64]) -> DMatrix<f64> {
-    DMatrix::from_fn(x.len(), x.len(), |i, j| x[i].powi(j as i32))
+///
+/// # Errors
+/// [`Error::Overflow`] if a power overflows.
+fn vandermonde(x: &[f64]) -> Result<DMatrix<f64>> {
+    let n = x.len();
+    let mut v = DMatrix::zeros(n, n);
+    for (i, &xi) in x.iter().enumerate() {
+        let mut power = 1.0;
+        for j in 0..n {
+            v[(i, j)] = crate::error::derived("Vandermonde entry xᵢʲ", power)?;
+            power *= xi;
+        }
+    }
+    Ok(v)
 }
 
 /// The 2-norm condition number of the Vandermonde matrix of `x` (ratio of extreme singular
-/// values): how many digits the power-basis solve may lose (`log₁₀ κ`). `None` when the
+/// values): how many digits the power-basis solve may lose (`log₁₀ κ`). `Ok(None)` when the
 /// smallest singular value is at or below rounding (`σ_min ≤ ε σ_max`): the matrix is
 /// numerically singular and its condition number cannot be measured in `f64`.
-pub fn vandermonde_condition(x: &[f64]) -> Option<f64> {
-    let s = vandermonde(x).singular_values();
-    let (max, min) = (s.max(), s.min());
-    (min > f64::EPSILON * max).then(|| max / min)
+///
+/// # Errors
+/// [`Error::NonFinite`] for a NaN or infinite node; [`Error::TooLarge`] beyond
+/// `√MAX_ELEMENTS` nodes; [`Error::Overflow`] if a power `xᵢʲ` overflows;
+/// [`Error::NoConvergence`] if the bounded SVD does not converge.
+pub fn vandermonde_condition(x: &[f64]) -> Result<Option<f64>> {
+    crate::error::size_product("Vandermonde nodes squared", x.len(), x.len())?;
+    for &v in x {
+        finite("Vandermonde node", v)?;
+    }
+    if x.is_empty() {
+        return Ok(None);
+    }
+    let s = crate::metrics::singular_values(&vandermonde(x)?)?;
+    let max = crate::error::derived("largest singular value of the Vandermonde matrix", s.max())?;
+    let min = s.min();
+    Ok((min > f64::EPSILON * max).then(|| max / min))
 }
 
 /// The interpolating polynomial in Lagrange form (seed 001),
 /// `p(t) = Σᵢ yᵢ ℓᵢ(t)`, `ℓᵢ(t) = Πⱼ≠ᵢ (t − tⱼ)/(tᵢ − tⱼ)`:
-/// no linear system, so no Vandermonde conditioning; O(n²) per evaluation.
+/// no linear system, so no Vandermonde conditioning.
+///
+/// Evaluated in the barycentric form (Berrut and Trefethen, *Barycentric Lagrange
+/// interpolation*, SIAM Review 46, 2004), `p(t) = Σᵢ λᵢ yᵢ / Σᵢ λᵢ` with
+/// `λᵢ = wᵢ/(t − tᵢ)` and the weights `wᵢ = 1/Πⱼ≠ᵢ (tᵢ − tⱼ)` formed from their logarithms
+/// and scaled so that `max |wᵢ| = 1`: the products over many nodes never overflow (150
+/// nodes on `[0, 1000]` have `Π |tᵢ − tⱼ| ≈ 10⁴⁰⁰`). Numerator and denominator are multiplied
+/// by `t − t_k` for the node `t_k` nearest to `t`, so `λ_k = w_k` and every other `|λᵢ| ≤ |wᵢ|`:
+/// no division by zero at a node (where `p(t_k) = y_k` exactly), for plain and dual numbers
+/// alike, and O(n) per evaluation.
 ///
 /// # Examples
 /// ```
@@ -108,32 +166,59 @@ pub fn vandermonde_condition(x: &[f64]) -> Option<f64> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lagrange {
     x: Vec<f64>,
+    /// `yᵢ / s` with `s = max |yᵢ|` (or 1), so that the sums stay below 1 per term.
     y: Vec<f64>,
-    /// `1 / Πⱼ≠ᵢ (tᵢ − tⱼ)`, the denominators of the `ℓᵢ`.
-    inv_denominators: Vec<f64>,
+    /// The data scale `s`.
+    scale: f64,
+    /// Barycentric weights scaled to `max |wᵢ| = 1`.
+    w: Vec<f64>,
 }
 
 impl Lagrange {
     /// The interpolant through `(xᵢ, yᵢ)`.
     ///
     /// # Errors
-    /// As [`PowerPolynomial::interpolate`]'s data checks.
+    /// As [`PowerPolynomial::interpolate`]'s data checks; [`Error::Overflow`] if the ratio of
+    /// the largest to the smallest barycentric weight exceeds the `f64` range (more than about
+    /// 1 000 equispaced nodes: such an interpolant is meaningless in `f64`).
     pub fn try_new(x: &[f64], y: &[f64]) -> Result<Self> {
         check_data(x, y)?;
-        let inv_denominators = (0..x.len())
+        let n = x.len();
+        // log |wᵢ| = −Σⱼ≠ᵢ ln |tᵢ − tⱼ|; sign (−1)^{#j > i} for increasing nodes
+        let logs: Vec<f64> = (0..n)
             .map(|i| {
-                let d: f64 = (0..x.len())
+                -(0..n)
                     .filter(|&j| j != i)
-                    .map(|j| x[i] - x[j])
-                    .product();
-                1.0 / d
+                    .map(|j| (x[i] - x[j]).abs().ln())
+                    .sum::<f64>()
             })
             .collect();
-        Ok(Self {
+        let top = logs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let mut w = Vec::with_capacity(n);
+        for (i, &l) in logs.iter().enumerate() {
+            let magnitude = (l - top).exp();
+            if magnitude.is_nan() || magnitude < f64::MIN_POSITIVE {
+                return Err(Error::Overflow {
+                    what: "ratio of the largest to the smallest barycentric weight",
+                    value: (top - l).exp(),
+                });
+            }
+            w.push(if (n - 1 - i).is_multiple_of(2) {
+                magnitude
+            } else {
+                -magnitude
+            });
+        }
+        let s = y.iter().fold(0.0, |m: f64, v| m.max(v.abs()));
+        let scale = if s > 0.0 { s } else { 1.0 };
+        let p = Self {
             x: x.to_vec(),
-            y: y.to_vec(),
-            inv_denominators,
-        })
+            y: y.iter().map(|v| v / scale).collect(),
+            scale,
+            w,
+        };
+        check_residual("Lagrange interpolation", x, y, |t| p.eval(t))?;
+        Ok(p)
     }
 
     /// The nodes.
@@ -141,24 +226,41 @@ impl Lagrange {
         &self.x
     }
 
-    /// `ℓᵢ(t)` for every `i`, for any number type.
-    pub fn basis<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
+    /// The scaled barycentric terms `λᵢ` at `t` (see [`Lagrange`]): `ℓᵢ(t) = λᵢ / Σⱼ λⱼ`.
+    fn lambdas<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
+        let x0 = t.re();
+        let k = (0..self.x.len())
+            .min_by(|&a, &b| (self.x[a] - x0).abs().total_cmp(&(self.x[b] - x0).abs()))
+            .unwrap_or(0);
+        let near = t - self.x[k];
         (0..self.x.len())
             .map(|i| {
-                let num = (0..self.x.len())
-                    .filter(|&j| j != i)
-                    .fold(D::one(), |acc, j| acc * (t - self.x[j]));
-                num * self.inv_denominators[i]
+                if i == k {
+                    D::from(self.w[k])
+                } else {
+                    near * self.w[i] / (t - self.x[i])
+                }
             })
             .collect()
     }
 
+    /// `ℓᵢ(t)` for every `i`, for any number type.
+    pub fn basis<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
+        let l = self.lambdas(t);
+        let total = l.iter().fold(D::zero(), |acc, &v| acc + v).recip();
+        l.into_iter().map(|v| v * total).collect()
+    }
+
     /// `p(t) = Σ yᵢ ℓᵢ(t)`.
     pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
-        self.basis(t)
-            .into_iter()
+        let l = self.lambdas(t);
+        let (num, den) = l
+            .iter()
             .zip(&self.y)
-            .fold(D::zero(), |acc, (l, &y)| acc + l * y)
+            .fold((D::zero(), D::zero()), |(num, den), (&v, &y)| {
+                (num + v * y, den + v)
+            });
+        num / den * self.scale
     }
 }
 
@@ -186,8 +288,11 @@ impl NodeFamily {
     /// The `degree + 1` nodes on `[a, b]`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] or [`Error::EmptyInterval`] for a bad interval.
+    /// [`Error::NonFinite`], [`Error::EmptyInterval`], [`Error::Overflow`] or
+    /// [`Error::GapTooSmall`] for a bad interval; [`Error::TooLarge`] if `degree + 1` exceeds
+    /// [`crate::error::MAX_ELEMENTS`].
     pub fn nodes(self, a: f64, b: f64, degree: usize) -> Result<Vec<f64>> {
+        crate::error::size_sum("interpolation nodes (degree + 1)", degree, 1)?;
         crate::domain::Interval::named("node interval", a, b)?;
         let n = degree as f64;
         Ok(match self {
@@ -215,7 +320,9 @@ pub const RUNGE_INTERVAL: (f64, f64) = (-5.0, 5.0);
 /// interpolant `p` of `f` of degree `degree` on `family` nodes (Lagrange form).
 ///
 /// # Errors
-/// [`Error::TooFewSamples`] if `samples < 2`; errors of the node construction.
+/// [`Error::TooFewSamples`] if `samples < 2`; errors of the node construction and of
+/// [`Lagrange::try_new`]; [`Error::Overflow`] if `f` or the interpolant is NaN or infinite at
+/// a sample (an error measure never drops NaN).
 pub fn max_interpolation_error(
     f: impl Fn(f64) -> f64,
     (a, b): (f64, f64),
@@ -227,8 +334,12 @@ pub fn max_interpolation_error(
     let x = family.nodes(a, b, degree)?;
     let y: Vec<f64> = x.iter().map(|&t| f(t)).collect();
     let p = Lagrange::try_new(&x, &y)?;
-    Ok(crate::domain::linspace(a, b, samples)
-        .into_iter()
-        .map(|t| (p.eval(t) - f(t)).abs())
-        .fold(0.0, f64::max))
+    let mut worst: f64 = 0.0;
+    for t in crate::domain::linspace(a, b, samples) {
+        worst = worst.max(crate::error::derived(
+            "interpolation error |p − f| at a sample",
+            (p.eval(t) - f(t)).abs(),
+        )?);
+    }
+    Ok(worst)
 }

@@ -92,7 +92,7 @@ fn patch_de_casteljau() -> Result<usize> {
 
 fn corner_data() -> Result<usize> {
     let nodes = linspace(0.0, TAU, 257);
-    let g = partials_on_grid(&Torus::default(), &nodes, &nodes);
+    let g = partials_on_grid(&Torus::default(), &nodes, &nodes)?;
     Ok(black_box(g).as_slice().len())
 }
 
@@ -102,11 +102,11 @@ thread_local! {
 }
 
 fn torus_grid() -> Result<usize> {
-    let spline = HermiteSpline::from_surface(
+    let spline = HermiteSpline::try_from_surface(
         &Torus::default(),
         Partition::uniform(0.0, TAU, 16)?,
         Partition::uniform(0.0, TAU, 16)?,
-    );
+    )?;
     let samples = linspace(0.0, TAU, 1024);
     GRID_BUFFER.with(|buf| {
         let mut out = buf.borrow_mut();

@@ -169,7 +169,7 @@ pub fn runge_rows() -> Result<Vec<RungeRow>> {
                 degree,
                 equispaced: err(NodeFamily::Equispaced)?,
                 chebyshev: err(NodeFamily::Chebyshev)?,
-                vandermonde_condition: vandermonde_condition(&nodes),
+                vandermonde_condition: vandermonde_condition(&nodes)?,
             })
         })
         .collect()

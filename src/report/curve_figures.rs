@@ -444,7 +444,7 @@ pub fn four_way() -> Result<Figure2d> {
             .collect::<Result<_>>()?;
         let bezier: Vec<Vector2<f64>> = linspace(0.0, 1.0, 60)
             .into_iter()
-            .filter_map(|u| bernstein_sum(&points, u))
+            .filter_map(|u| bernstein_sum(&points, u).ok())
             .collect();
         panels.push(
             Panel::new(format!("{count} control points"), "x", "y")

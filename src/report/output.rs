@@ -265,7 +265,41 @@ pub fn to_html(table: &Table) -> Result<String> {
     Ok(html)
 }
 
+/// A temporary path beside `path`, in the same folder (so a rename is atomic), keeping its
+/// extension (plotters picks the image format from it): `.<stem>.<pid>.tmp.<ext>`.
+fn temporary_beside(path: &Path) -> PathBuf {
+    let stem = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("output");
+    let ext = path.extension().and_then(|s| s.to_str()).unwrap_or("tmp");
+    path.with_file_name(format!(".{stem}.{}.tmp.{ext}", std::process::id()))
+}
+
+/// Produces `path` atomically: `make` writes a temporary file beside it, which is renamed
+/// over `path` only if `make` succeeded; on failure the temporary file is removed, so a
+/// failed run (a full disk, a file-size limit) never leaves a truncated file under an
+/// output's name.
+fn produce(path: &Path, make: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+    let tmp = temporary_beside(path);
+    let result = make(&tmp).and_then(|()| fs::rename(&tmp, path).map_err(io_err(path)));
+    if result.is_err() {
+        let _ = fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// Writes `bytes` to `path` atomically (see [`produce`]), flushing them to the file first.
+fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    produce(path, |tmp| {
+        let mut file = fs::File::create(tmp).map_err(io_err(path))?;
+        std::io::Write::write_all(&mut file, bytes).map_err(io_err(path))?;
+        file.sync_all().map_err(io_err(path))
+    })
+}
+
 /// Writes `<dir>/tables/<id>.csv` (full precision) and `.md`; returns the paths written.
+/// Each file is written to a temporary file beside it and renamed into place.
 ///
 /// # Errors
 /// [`Error::Io`] if the folder or a file cannot be written.
@@ -273,23 +307,25 @@ pub fn write_table(table: &Table, dir: &Path) -> Result<Vec<PathBuf>> {
     let folder = dir.join("tables");
     fs::create_dir_all(&folder).map_err(io_err(&folder))?;
     let csv_path = folder.join(format!("{}.csv", table.id));
-    let mut file = fs::File::create(&csv_path).map_err(io_err(&csv_path))?;
-    CsvWriter::new(&mut file)
+    let mut csv = Vec::new();
+    CsvWriter::new(&mut csv)
         .finish(&mut table.df.clone())
         .map_err(|e| Error::Io {
             path: csv_path.clone(),
             message: e.to_string(),
         })?;
+    write_atomic(&csv_path, &csv)?;
     let md_path = folder.join(format!("{}.md", table.id));
-    fs::write(&md_path, to_markdown(table)?).map_err(io_err(&md_path))?;
+    write_atomic(&md_path, to_markdown(table)?.as_bytes())?;
     Ok(vec![csv_path, md_path])
 }
 
-/// Draws `figure` into `<dir>/figures/<id>.png` and `.svg` ([`FIGURE_SIZE`] pixels).
+/// Draws `figure` into `<dir>/figures/<id>.png` and `.svg` ([`FIGURE_SIZE`] pixels), each
+/// through a temporary file beside it renamed into place.
 ///
 /// # Errors
-/// [`Error::Io`] if the folder cannot be created; [`Error::Figure`] if drawing or encoding
-/// fails.
+/// [`Error::Io`] if the folder cannot be created or a file written; [`Error::Figure`] if
+/// drawing or encoding fails.
 pub fn write_figure(figure: FigureId, dir: &Path) -> Result<Vec<PathBuf>> {
     let folder = dir.join("figures");
     fs::create_dir_all(&folder).map_err(io_err(&folder))?;
@@ -298,17 +334,19 @@ pub fn write_figure(figure: FigureId, dir: &Path) -> Result<Vec<PathBuf>> {
         message: e.to_string(),
     };
     let png = folder.join(format!("{}.png", figure.id()));
-    {
-        let root = BitMapBackend::new(&png, FIGURE_SIZE).into_drawing_area();
+    produce(&png, |tmp| {
+        let root = BitMapBackend::new(tmp, FIGURE_SIZE).into_drawing_area();
         figure.render(&root)?;
-        root.present().map_err(|e| fail(&e))?;
-    }
+        root.present().map_err(|e| fail(&e))
+    })?;
     let svg = folder.join(format!("{}.svg", figure.id()));
+    let mut text = String::new();
     {
-        let root = SVGBackend::new(&svg, FIGURE_SIZE).into_drawing_area();
+        let root = SVGBackend::with_string(&mut text, FIGURE_SIZE).into_drawing_area();
         figure.render(&root)?;
         root.present().map_err(|e| fail(&e))?;
     }
+    write_atomic(&svg, text.as_bytes())?;
     Ok(vec![png, svg])
 }
 

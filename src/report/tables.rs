@@ -6,7 +6,9 @@ use crate::domain::Rect;
 use crate::error::{Error, Result};
 use crate::hermite::patch::HermitePatch;
 use crate::report::printed::{agrees_to_printed, PrintedRow, T3, T6};
-use crate::study::{convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC};
+use crate::study::{
+    convergence, uniform_spline_errors, ConvergenceOrders, PatchEvaluation, REPORT_PREC,
+};
 use crate::surface::Torus;
 use crate::CoordErrors;
 use nalgebra::Vector3;
@@ -215,10 +217,11 @@ pub fn convergence_table() -> Result<Table> {
     let (mut n_col, mut h_col, mut coord) = (vec![], vec![], vec![]);
     // value and order (None on the first row, which has no previous row) of each measure
     type Measure = fn(&CoordErrors) -> Vector3<f64>;
-    let measures: [(&str, Measure); 3] = [
-        ("max_abs", |e| e.max_abs),
-        ("rms", |e| e.rms),
-        ("report_norm", |e| e.report_norm),
+    type Order = fn(&ConvergenceOrders) -> [Option<f64>; 3];
+    let measures: [(&str, Measure, Order); 3] = [
+        ("max_abs", |e| e.max_abs, |o| o.max_abs),
+        ("rms", |e| e.rms, |o| o.rms),
+        ("report_norm", |e| e.report_norm, |o| o.report_norm),
     ];
     let mut values: [Vec<f64>; 3] = Default::default();
     let mut orders: [Vec<Option<f64>>; 3] = Default::default();
@@ -227,9 +230,9 @@ pub fn convergence_table() -> Result<Table> {
             n_col.push(row.n as u32);
             h_col.push(row.h);
             coord.push(*axis);
-            for (q, (_, get)) in measures.iter().enumerate() {
+            for (q, (_, get, order)) in measures.iter().enumerate() {
                 values[q].push(get(&row.errors)[k]);
-                orders[q].push(row.order.as_ref().map(|o| get(o)[k]));
+                orders[q].push(row.order.as_ref().and_then(|o| order(o)[k]));
             }
         }
     }
@@ -238,7 +241,7 @@ pub fn convergence_table() -> Result<Table> {
         Column::new("h".into(), h_col),
         Column::new("coord".into(), coord),
     ];
-    for (q, (name, _)) in measures.iter().enumerate() {
+    for (q, (name, _, _)) in measures.iter().enumerate() {
         columns.push(Column::new((*name).into(), std::mem::take(&mut values[q])));
         columns.push(Column::new(
             format!("order_{name}").into(),
