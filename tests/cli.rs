@@ -107,3 +107,100 @@ fn only_draws_one_figure() {
     assert_eq!(names.len(), 2, "{names:?}");
     assert!(names.contains(&"fig2-torus.png".to_string()), "{names:?}");
 }
+
+/// Runs `splinelab ARGS` through `sh -c` with `shell` redirections, returning (status,
+/// stderr). Used for a closed or full standard output.
+fn through_shell(args: &str, shell: &str) -> (std::process::ExitStatus, String) {
+    let bin = env!("CARGO_BIN_EXE_splinelab");
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(format!("'{bin}' {args} {shell}"))
+        .output()
+        .expect("sh runs");
+    (
+        out.status,
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn a_closed_or_full_stdout_is_a_readable_error_not_a_panic() {
+    // a pipe whose reading end is closed before the program starts: every write is EPIPE
+    // (what `splinelab --list | head -0` gives once head has exited)
+    for args in [&["--list"][..], &["bench", "--list"][..]] {
+        let (reader, writer) = std::io::pipe().expect("pipe");
+        drop(reader);
+        let out = splinelab()
+            .args(args)
+            .stdout(writer)
+            .output()
+            .expect("runs");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(
+            out.status.code(),
+            Some(1),
+            "{args:?} into a closed pipe: {stderr}"
+        );
+        assert!(
+            stderr.starts_with("splinelab: error:") && !stderr.contains("panicked"),
+            "{args:?}: {stderr}"
+        );
+    }
+    // a full device
+    if std::path::Path::new("/dev/full").exists() {
+        let (status, stderr) = through_shell("--list", "> /dev/full");
+        assert_eq!(status.code(), Some(1), "--list > /dev/full: {stderr}");
+        assert!(
+            stderr.starts_with("splinelab: error:") && !stderr.contains("panicked"),
+            "{stderr}"
+        );
+    }
+}
+
+#[test]
+fn outputs_are_written_through_temporary_files_renamed_into_place() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    regenerate_only("t3-error", dir.path());
+    regenerate_only("fig-runge", dir.path());
+    for sub in ["tables", "figures"] {
+        for entry in std::fs::read_dir(dir.path().join(sub)).expect("folder") {
+            let name = entry.expect("entry").file_name();
+            let name = name.to_string_lossy();
+            assert!(
+                !name.starts_with('.') && !name.contains(".tmp"),
+                "a temporary file was left behind: {name}"
+            );
+        }
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_run_stopped_by_a_file_size_limit_leaves_no_truncated_output() {
+    // `ulimit -f 8` (8 blocks of 512 bytes): the first figure (PNG, tens of kB) cannot be
+    // written; the process is stopped by SIGXFSZ (or gets EFBIG) while writing it. Whatever
+    // happens, every file under an output's name must be complete: here, each one present
+    // must equal the same output from an unrestricted run.
+    let full = tempfile::tempdir().expect("tempdir");
+    regenerate_only("fig-runge", full.path());
+    let limited = tempfile::tempdir().expect("tempdir");
+    let bin = env!("CARGO_BIN_EXE_splinelab");
+    let status = Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f 8; exec '{bin}' --only fig-runge --out '{}'",
+            limited.path().display()
+        ))
+        .status()
+        .expect("sh runs");
+    assert!(!status.success(), "the limit must stop the run");
+    let figures = limited.path().join("figures");
+    for name in ["fig-runge.png", "fig-runge.svg"] {
+        let path = figures.join(name);
+        if path.exists() {
+            let want = std::fs::read(full.path().join("figures").join(name)).expect("reference");
+            let got = std::fs::read(&path).expect("output");
+            assert_eq!(got, want, "{name} exists but differs from a complete run");
+        }
+    }
+}

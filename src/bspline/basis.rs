@@ -46,15 +46,14 @@ impl BSplineBasis {
     /// The basis of degree `degree` on `knots`.
     ///
     /// # Errors
+    /// [`Error::TooLarge`] for a degree above [`crate::error::MAX_ELEMENTS`];
     /// [`Error::TooFewKnots`] for fewer than `2(p + 1)` knots; [`Error::MultiplicityTooHigh`]
     /// for a knot repeated more than `p + 1` times; [`Error::EmptyInterval`] if the domain
     /// `[t_p, t_{n+1}]` is empty.
     pub fn try_new(knots: KnotVector, degree: usize) -> Result<Self> {
-        // 2(p + 1) knots are needed; a degree whose count overflows cannot have them
-        let needed = degree
-            .checked_add(1)
-            .and_then(|order| order.checked_mul(2))
-            .unwrap_or(usize::MAX);
+        // 2(p + 1) knots are needed; a degree beyond any knot vector's length is named as such
+        crate::error::size("B-spline degree", degree)?;
+        let needed = 2 * (degree + 1);
         if knots.len() < needed {
             return Err(Error::TooFewKnots {
                 needed,
