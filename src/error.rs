@@ -13,7 +13,10 @@
 //!   [`Error::IllConditioned`] when `f64` cannot deliver it), a basis sums to one, a
 //!   partition strictly increases.
 //! - **Evaluation of a validated object at a finite parameter in its domain is finite** and
-//!   does not fail. Derivatives are exact to rounding (dual numbers, or the derivative
+//!   does not fail. (Polynomial interpolants are the one bounded exception: between its
+//!   nodes an interpolant of degree `n` can exceed its data by its Lebesgue constant, up to
+//!   about `2ⁿ` for equispaced nodes, so it is finite wherever its true value is below
+//!   `f64::MAX`.) Derivatives are exact to rounding (dual numbers, or the derivative
 //!   recurrence of *The NURBS Book* A2.3 where knots nearly coincide), finite wherever their
 //!   true value is representable. Outside the domain, curves extrapolate their end pieces.
 //! - **The domain's right end is the left limit**: a piecewise object evaluated at the last

@@ -176,12 +176,26 @@ impl KnotVector {
         };
         let mut knots = outer(a, -1.0)?;
         knots.reverse();
+        // a spacing below the resolution of a and b would repeat outer knots
+        let after = outer(b, 1.0)?;
+        if let EndKnots::Spaced(h) = ends {
+            let left = knots.iter().chain(std::iter::once(&a));
+            let right = std::iter::once(&b).chain(after.iter());
+            for side in [left.copied().collect::<Vec<_>>(), right.copied().collect()] {
+                if side.windows(2).any(|w| w[1] <= w[0]) {
+                    return Err(Error::NotPositive {
+                        what: "end knot spacing (below the f64 resolution at the interval's ends)",
+                        value: h,
+                    });
+                }
+            }
+        }
         knots.push(a);
         for (&x, &m) in interior.iter().zip(multiplicities) {
             knots.extend(std::iter::repeat_n(x, m));
         }
         knots.push(b);
-        knots.extend(outer(b, 1.0)?);
+        knots.extend(after);
         Self::try_new(knots)
     }
 
@@ -256,7 +270,10 @@ impl KnotVector {
     /// have multiplicity `degree + 1`, so the curve interpolates its end control points.
     pub fn is_open(&self, degree: usize) -> bool {
         let b = self.breakpoints();
-        b.len() >= 2 && b[0].1 == degree + 1 && b[b.len() - 1].1 == degree + 1
+        let Some(order) = degree.checked_add(1) else {
+            return false;
+        };
+        b.len() >= 2 && b[0].1 == order && b[b.len() - 1].1 == order
     }
 
     /// Whether the vector is uniform (seed 001): its distinct interior breakpoints — those

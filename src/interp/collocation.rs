@@ -268,10 +268,10 @@ pub fn interpolate_curve<const N: usize>(
     if degree == 0 {
         return Err(Error::DegreeTooLow { min: 1, got: 0 });
     }
-    if points.len() < degree + 1 {
+    if points.len() <= degree {
         return Err(Error::TooFewPoints {
             what: "points for the interpolating curve",
-            needed: degree + 1,
+            needed: degree.saturating_add(1),
             got: points.len(),
         });
     }
