@@ -9,9 +9,10 @@
 //!   corner data of a surface, polynomial coefficients, NURBS weight ratios. A failure is a
 //!   typed [`Error`] that names the real cause.
 //! - **An `Ok` value is finite and satisfies its defining property**: an interpolant
-//!   reproduces its data (every interpolation route checks its residual and returns
-//!   [`Error::IllConditioned`] when `f64` cannot deliver it), a basis sums to one, a
-//!   partition strictly increases.
+//!   reproduces its data (routes that solve a possibly ill-conditioned system check their
+//!   residual and return [`Error::IllConditioned`] when `f64` cannot deliver it; the cubic
+//!   spline's moment form interpolates exactly), a basis sums to one, a partition strictly
+//!   increases.
 //! - **Evaluation of a validated object at a finite parameter in its domain is finite** and
 //!   does not fail. (Polynomial interpolants are the one bounded exception: between its
 //!   nodes an interpolant of degree `n` can exceed its data by its Lebesgue constant, up to

@@ -3,7 +3,6 @@
 
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
-use crate::horner;
 use crate::interp::param::Parametrization;
 use crate::interp::{check_sites, IntervalCursor};
 use crate::tridiagonal::{solve, Row};
@@ -76,11 +75,19 @@ pub const PERIODIC_MATCH: f64 = 1e-12;
 /// closed by the [`EndCondition`]: a tridiagonal system (clamped, natural) or a cyclic one
 /// (periodic: corners `+h_{n−1}`; anticyclic: `M_n = −M₀` gives corners `−h_{n−1}`), all
 /// strictly diagonally dominant and solved in O(n) for all coordinates at once. On
-/// `[xᵢ, xᵢ₊₁]` the spline is `aᵢ + bᵢ h + cᵢ h² + dᵢ h³`, `h = x − xᵢ`, with
-/// `aᵢ = yᵢ`, `bᵢ = δᵢ − hᵢ(2Mᵢ + Mᵢ₊₁)/6`, `cᵢ = Mᵢ/2`, `dᵢ = (Mᵢ₊₁ − Mᵢ)/(6hᵢ)`
-/// (de Boor, *A Practical Guide to Splines*, ch. IV); these are formed when a piece is
-/// evaluated (once per piece in [`CubicSpline::eval_many`]), so a spline costs 3 numbers per
-/// node and coordinate.
+/// `[xᵢ, xᵢ₊₁]`, with `u = (x − xᵢ)/hᵢ` and `v = 1 − u`, the spline is evaluated in its
+/// moment form
+///
+/// `s(x) = yᵢ v + yᵢ₊₁ u + (hᵢ²/6)[Mᵢ (v³ − v) + Mᵢ₊₁ (u³ − u)]
+///       = yᵢ v + yᵢ₊₁ u − u v [Mᵢ (1 + v) + Mᵢ₊₁ (1 + u)] hᵢ²/6`
+///
+/// (de Boor, *A Practical Guide to Splines*, ch. IV), which reproduces both end values of
+/// every piece exactly (`u = 0` and `u = (xᵢ₊₁ − xᵢ)/hᵢ = 1` are exact), so the spline
+/// interpolates its data bit for bit, and involves no large power coefficient that could
+/// cancel (the power form `aᵢ + bᵢ h + …` with `bᵢ = δᵢ − hᵢ(2Mᵢ + Mᵢ₊₁)/6` loses digits at
+/// the right end of a piece when the mesh is very uneven). A spline costs 3 numbers per
+/// node and coordinate; each piece's data are gathered once per piece in
+/// [`CubicSpline::eval_many`].
 ///
 /// # Examples
 /// ```
@@ -110,8 +117,9 @@ impl<const N: usize> CubicSpline<N> {
     /// abscissae closer than `f64::MIN_POSITIVE`; [`Error::TooLarge`] beyond
     /// [`crate::error::MAX_ELEMENTS`] points; [`Error::PeriodicEndsMismatch`] for periodic
     /// ends with `y₀ ≠ y_n` (beyond [`PERIODIC_MATCH`]); [`Error::Overflow`] if a derived
-    /// slope, moment or coefficient overflows; [`Error::IllConditioned`] if the pieces do not
-    /// reproduce the data within [`crate::interp::RESIDUAL_TOLERANCE`].
+    /// slope, moment or scaled moment overflows. (No residual can fail: the moment form
+    /// reproduces the data exactly, and the moment system is strictly diagonally dominant,
+    /// so its solve is stable whatever the mesh.)
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>], end: EndCondition<N>) -> Result<Self> {
         Self::build(x, y.to_vec(), end)
     }
@@ -134,37 +142,29 @@ impl<const N: usize> CubicSpline<N> {
         Ok(spline)
     }
 
-    /// Checks what the build derived: every piece's coefficients are finite, and the piece
-    /// ending at each node reproduces the value there, `|sᵢ₋₁(xᵢ) − yᵢ| ≤`
-    /// [`crate::interp::RESIDUAL_TOLERANCE`] `· max |y|` (the value from the right, `aᵢ = yᵢ`,
-    /// is exact by construction). Together with finite coefficients this makes every
-    /// evaluation in the domain finite.
+    /// Checks what the build derived: every piece's data (`yᵢ`, and `Mᵢ hᵢ²/6` in the moment
+    /// form) are finite, and so is the bound `|yᵢ| + |yᵢ₊₁| + (|Mᵢ| + |Mᵢ₊₁|) hᵢ²/6 · 2` of the
+    /// piece on its interval, so every evaluation in the domain is finite. Interpolation
+    /// itself needs no check: the moment form reproduces `yᵢ` and `yᵢ₊₁` exactly.
     ///
     /// # Errors
-    /// [`Error::Overflow`] for a non-finite coefficient (slopes `Δy/h` or moments that
-    /// overflow); [`Error::IllConditioned`] for a residual above the tolerance.
+    /// [`Error::Overflow`] for a moment, scaled moment or bound that is not finite (slopes
+    /// `Δy/h` that overflow, say).
     fn verify(&self) -> Result<()> {
-        let scale = horner::max_norm(&self.y);
-        let mut worst: f64 = 0.0;
         for i in 0..self.x.len() - 1 {
-            let c = self.piece(i);
-            let h = self.x[i + 1] - self.x[i];
-            let size = horner::size(&c, h);
-            if !size.is_finite() {
+            let p = self.piece(i);
+            let finite = [p.m0, p.m1, self.m[i], self.m[i + 1]]
+                .iter()
+                .all(|v| v.iter().all(|x| x.is_finite()));
+            let bound = p.y0.amax() + p.y1.amax() + 2.0 * (p.m0.amax() + p.m1.amax());
+            if !(finite && bound.is_finite()) {
                 return Err(Error::Overflow {
-                    what: "cubic spline piece coefficients (Σ |cₖ| hᵏ)",
-                    value: size,
+                    what: "cubic spline piece (moments Mᵢ hᵢ²/6 and values)",
+                    value: bound,
                 });
             }
-            let r = (horner::eval(&c, h) - self.y[i + 1]).amax();
-            if r.is_nan() || r > worst {
-                worst = r;
-            }
         }
-        crate::interp::accept_residual(
-            "cubic spline",
-            crate::interp::relative_residual(std::iter::once(worst), scale),
-        )
+        Ok(())
     }
 
     /// The interpolating spline curve through `points` at parameters chosen by `param`
@@ -200,27 +200,18 @@ impl<const N: usize> CubicSpline<N> {
         inner.partition_point(|&node| node <= x)
     }
 
-    /// The power coefficients `[aᵢ, bᵢ, cᵢ, dᵢ]` of piece `i` in `h = x − xᵢ`.
-    fn piece(&self, i: usize) -> horner::Cubic<N> {
+    /// The data of piece `i` on `[xᵢ, xᵢ₊₁]` for the moment form.
+    fn piece(&self, i: usize) -> Piece<N> {
         let h = self.x[i + 1] - self.x[i];
-        let (y0, y1, m0, m1) = (self.y[i], self.y[i + 1], self.m[i], self.m[i + 1]);
-        let delta = (y1 - y0) / h;
-        [
-            y0,
-            delta - (m0 * 2.0 + m1) * (h / 6.0),
-            m0 / 2.0,
-            (m1 - m0) / (6.0 * h),
-        ]
-    }
-
-    /// `s(x)` on piece `i` (coefficients `c`) by Horner's rule, for any number type.
-    fn horner<D: DualNum<Primitive = f64> + Copy>(
-        &self,
-        i: usize,
-        c: &horner::Cubic<N>,
-        x: D,
-    ) -> SVector<D, N> {
-        horner::eval(c, x - self.x[i])
+        let k = h * h / 6.0;
+        Piece {
+            x0: self.x[i],
+            h,
+            y0: self.y[i],
+            y1: self.y[i + 1],
+            m0: self.m[i] * k,
+            m1: self.m[i + 1] * k,
+        }
     }
 
     /// One-sided derivatives at the ends, `(s′(x₀), s″(x₀), s′(x_n), s″(x_n))`, each from its
@@ -229,7 +220,7 @@ impl<const N: usize> CubicSpline<N> {
         let (a, b) = self.domain();
         let last = self.x.len() - 2;
         let at = |i: usize, x: f64| {
-            let c = self.horner(i, &self.piece(i), Dual2_64::from_re(x).derivative());
+            let c = self.piece(i).eval(Dual2_64::from_re(x).derivative());
             (c.map(|d| d.v1), c.map(|d| d.v2))
         };
         let (d1a, d2a) = at(0, a);
@@ -238,19 +229,19 @@ impl<const N: usize> CubicSpline<N> {
     }
 
     /// Evaluates at every `x` of `xs`, in order, handing each value to `emit`. For sorted
-    /// input the interval search costs a comparison or two per point and each piece's
-    /// coefficients are formed once. The same formula as [`CubicSpline::eval`].
+    /// input the interval search costs a comparison or two per point and each piece's data
+    /// are gathered once. The same formula as [`CubicSpline::eval`].
     fn for_each_value(&self, xs: &[f64], mut emit: impl FnMut(SVector<f64, N>)) {
         let mut cursor = IntervalCursor::new(&self.x);
         let mut current = usize::MAX;
-        let mut coeffs = [SVector::zeros(); 4];
+        let mut piece = self.piece(0);
         for &x in xs {
             let i = cursor.find(x);
             if i != current {
                 current = i;
-                coeffs = self.piece(i);
+                piece = self.piece(i);
             }
-            emit(self.horner(i, &coeffs, x));
+            emit(piece.eval(x));
         }
     }
 
@@ -266,8 +257,7 @@ impl<const N: usize> CubicSpline<N> {
 impl<const N: usize> ParametricCurve<N> for CubicSpline<N> {
     /// `s(x)` for any number type: at `x + ε` the derivative comes too, exact.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
-        let i = self.interval(x.re());
-        self.horner(i, &self.piece(i), x)
+        self.piece(self.interval(x.re())).eval(x)
     }
 
     /// `[x₀, x_n]`.
@@ -301,6 +291,30 @@ impl CubicSpline<1> {
         out.clear();
         out.reserve(xs.len());
         self.for_each_value(xs, |v| out.push(v.x));
+    }
+}
+
+/// One piece of a cubic spline in moment form: `s = y₀ v + y₁ u − u v [m₀ (1 + v) + m₁ (1 + u)]`
+/// with `u = (x − x₀)/h`, `v = 1 − u` and the scaled moments `mₖ = Mₖ h²/6`.
+#[derive(Debug, Clone, Copy)]
+struct Piece<const N: usize> {
+    x0: f64,
+    h: f64,
+    y0: SVector<f64, N>,
+    y1: SVector<f64, N>,
+    m0: SVector<f64, N>,
+    m1: SVector<f64, N>,
+}
+
+impl<const N: usize> Piece<N> {
+    /// `s(x)` for any number type (the piece's polynomial, also outside its interval).
+    #[inline]
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
+        let u = (x - self.x0) / self.h;
+        let v = -u + 1.0;
+        let lift = |w: &SVector<f64, N>| w.map(D::from);
+        lift(&self.y0) * v + lift(&self.y1) * u
+            - (lift(&self.m0) * (v + 1.0) + lift(&self.m1) * (u + 1.0)) * (u * v)
     }
 }
 
