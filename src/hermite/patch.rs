@@ -84,19 +84,7 @@ impl HermitePatch {
         let mut c = [[Vector3::zeros(); 4]; 4];
         for (a, row) in corners.iter().enumerate() {
             for (b, p) in row.iter().enumerate() {
-                for v in [p.point, p.ds, p.dt, p.dst] {
-                    finite_points("Hermite corner datum", &[v]).map_err(|e| match e {
-                        Error::CoordinateTooLarge { .. } => e,
-                        _ => Error::NonFinite {
-                            what: "Hermite corner datum",
-                            value: v
-                                .iter()
-                                .copied()
-                                .find(|x| !x.is_finite())
-                                .unwrap_or(f64::NAN),
-                        },
-                    })?;
-                }
+                finite_points("Hermite corner datum", &[p.point, p.ds, p.dt, p.dst])?;
                 c[VALUE[a]][VALUE[b]] = p.point;
                 c[VALUE[a]][SLOPE[b]] = p.dt * dv;
                 c[SLOPE[a]][VALUE[b]] = p.ds * du;
