@@ -403,6 +403,23 @@ pub(crate) fn finite_points<const N: usize>(
     Ok(())
 }
 
+/// A derived coordinate (a scaled datum, a sum of radii): [`Error::Overflow`] if NaN,
+/// [`Error::CoordinateTooLarge`] if infinite or beyond [`MAX_COORDINATE`].
+pub(crate) fn derived_coordinate(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_nan() {
+        return Err(Error::Overflow { what, value });
+    }
+    if value.abs() <= MAX_COORDINATE {
+        Ok(value)
+    } else {
+        Err(Error::CoordinateTooLarge {
+            what,
+            value,
+            max: MAX_COORDINATE,
+        })
+    }
+}
+
 /// Returns `value` if it is finite and at most [`MAX_COORDINATE`] in magnitude.
 pub(crate) fn coordinate(what: &'static str, value: f64) -> Result<f64> {
     finite(what, value)?;

@@ -69,12 +69,20 @@ pub struct CoordErrors {
 }
 
 /// Collects per-patch errors and reduces them as Codice 14 does.
+///
+/// Sums are kept twice: plainly (the report's arithmetic, bit for bit) and in an
+/// overflow-free form (a running mean of the norms; squares scaled by the running maximum, as
+/// LAPACK's `dnrm2`), which is used only where the plain sum overflows — errors near
+/// `f64::MAX` give their true mean and RMS, never `inf`.
 #[derive(Debug, Clone, Default)]
 pub struct ErrorAccumulator {
     norm_sum: Vector3<f64>,
+    norm_mean: Vector3<f64>,
     patches: usize,
     max_abs: Vector3<f64>,
     sum_sq: Vector3<f64>,
+    /// `Σ (d / max_abs)²` per coordinate, rescaled whenever `max_abs` grows.
+    scaled_sq: Vector3<f64>,
     samples: usize,
 }
 
@@ -115,26 +123,54 @@ impl ErrorAccumulator {
             }
             diff.push(d);
         }
-        for (k, sum) in self.norm_sum.iter_mut().enumerate() {
-            *sum += matlab_norm(&DMatrix::from_fn(r, c, |i, j| diff[i * c + j][k]))?;
+        let count = (self.patches + 1) as f64;
+        for k in 0..3 {
+            let norm = matlab_norm(&DMatrix::from_fn(r, c, |i, j| diff[i * c + j][k]))?;
+            self.norm_sum[k] += norm;
+            self.norm_mean[k] += (norm - self.norm_mean[k]) / count;
         }
         for d in &diff {
-            self.max_abs = self.max_abs.sup(d);
             self.sum_sq += d.component_mul(d);
+            for k in 0..3 {
+                let (x, m) = (d[k], self.max_abs[k]);
+                if x > m {
+                    self.scaled_sq[k] = 1.0 + self.scaled_sq[k] * (m / x) * (m / x);
+                    self.max_abs[k] = x;
+                } else if x > 0.0 {
+                    self.scaled_sq[k] += (x / m) * (x / m);
+                }
+            }
         }
         self.patches += 1;
         self.samples += diff.len();
         Ok(())
     }
 
-    /// The reduced errors; all zero if nothing was added.
+    /// The reduced errors; all zero if nothing was added. Finite whatever the errors' size
+    /// (the overflow-free sums replace the plain ones where those overflow or underflow).
     pub fn finish(&self) -> CoordErrors {
         let p = self.patches.max(1) as f64;
         let n = self.samples.max(1) as f64;
+        // squares below this are subnormal or near it: the plain sum has lost digits
+        const SQUARES_FLOOR: f64 = 1e-290;
         CoordErrors {
-            report_norm: self.norm_sum / p,
+            report_norm: Vector3::from_fn(|k, _| {
+                let plain = self.norm_sum[k] / p;
+                if plain.is_finite() {
+                    plain
+                } else {
+                    self.norm_mean[k]
+                }
+            }),
             max_abs: self.max_abs,
-            rms: (self.sum_sq / n).map(f64::sqrt),
+            rms: Vector3::from_fn(|k, _| {
+                let plain = self.sum_sq[k];
+                if self.max_abs[k] == 0.0 || (plain.is_finite() && plain >= SQUARES_FLOOR) {
+                    (plain / n).sqrt()
+                } else {
+                    self.max_abs[k] * (self.scaled_sq[k] / n).sqrt()
+                }
+            }),
         }
     }
 }

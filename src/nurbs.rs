@@ -242,8 +242,10 @@ impl NurbsCurve<2> {
     /// curve starts at `center + (0, −r)` and runs counter-clockwise.
     ///
     /// # Errors
-    /// [`Error::NotPositive`] unless `radius` is positive and finite; [`Error::NonFinite`] for
-    /// a NaN or infinite centre.
+    /// [`Error::NotPositive`] unless `radius` is positive, finite and not subnormal (below
+    /// `f64::MIN_POSITIVE` its points lose their precision); [`Error::NonFinite`] for a NaN or
+    /// infinite centre; [`Error::CoordinateTooLarge`] for control points beyond
+    /// [`crate::error::MAX_COORDINATE`].
     pub fn circle7(center: Vector2<f64>, radius: f64) -> Result<Self> {
         Self::regular_circle(center, radius, 3)
     }
@@ -262,12 +264,13 @@ impl NurbsCurve<2> {
     /// The circle as `sides` rational quadratic arcs on the circumscribed regular polygon:
     /// `2·sides + 1` control points, double interior knots at `k/sides`.
     fn regular_circle(center: Vector2<f64>, radius: f64, sides: usize) -> Result<Self> {
-        if !(radius.is_finite() && radius > 0.0) {
+        if !(radius.is_finite() && radius >= f64::MIN_POSITIVE) {
             return Err(Error::NotPositive {
-                what: "circle radius",
+                what: "circle radius (positive, finite, not subnormal)",
                 value: radius,
             });
         }
+        crate::error::finite_points("circle centre", &[center])?;
         let half = std::f64::consts::PI / sides as f64; // half of each arc's angle
         let start = -std::f64::consts::FRAC_PI_2;
         let mut points = Vec::with_capacity(2 * sides + 1);

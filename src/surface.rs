@@ -178,7 +178,7 @@ impl Torus {
             major: positive("torus major radius", major)?,
             minor: positive("torus minor radius", minor)?,
         };
-        crate::error::coordinate("torus R + r", major + minor)?;
+        crate::error::derived_coordinate("torus R + r", major + minor)?;
         Ok(torus)
     }
 

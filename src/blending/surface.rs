@@ -87,7 +87,7 @@ impl SlidingBicubic {
         if cell.0 >= self.cells.0 || cell.1 >= self.cells.1 {
             return Err(Error::IndexOutOfRange {
                 what: "sliding bicubic cell",
-                index: cell.0 * self.cells.1 + cell.1,
+                index: cell.0.saturating_mul(self.cells.1).saturating_add(cell.1),
                 len: self.nets.len(),
             });
         }

@@ -88,11 +88,12 @@ impl HermitePatch {
                 c[VALUE[a]][VALUE[b]] = p.point;
                 c[VALUE[a]][SLOPE[b]] = p.dt * dv;
                 c[SLOPE[a]][VALUE[b]] = p.ds * du;
-                c[SLOPE[a]][SLOPE[b]] = p.dst * (du * dv);
+                // (X_st Δu) Δv: a zero twist stays zero even where Δu Δv overflows
+                c[SLOPE[a]][SLOPE[b]] = p.dst * du * dv;
             }
         }
-        for row in &c {
-            finite_points("Hermite matrix entry (scaled corner datum)", row)?;
+        for x in c.iter().flatten().flat_map(|v| v.iter()) {
+            crate::error::derived_coordinate("Hermite matrix entry (scaled corner datum)", *x)?;
         }
         Ok(Self { c })
     }

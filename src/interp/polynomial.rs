@@ -27,7 +27,7 @@ fn check_data(x: &[f64], y: &[f64]) -> Result<()> {
     crate::error::size_product("interpolation nodes squared", x.len(), x.len())?;
     check_sites("interpolation nodes", x)?;
     for &v in y {
-        finite("interpolation value", v)?;
+        crate::error::coordinate("interpolation value", v)?;
     }
     Ok(())
 }
@@ -290,12 +290,13 @@ impl NodeFamily {
     /// # Errors
     /// [`Error::NonFinite`], [`Error::EmptyInterval`], [`Error::Overflow`] or
     /// [`Error::GapTooSmall`] for a bad interval; [`Error::TooLarge`] if `degree + 1` exceeds
-    /// [`crate::error::MAX_ELEMENTS`].
+    /// [`crate::error::MAX_ELEMENTS`]; [`Error::RepeatedParameter`] or [`Error::GapTooSmall`]
+    /// if the nodes are not distinct in `f64` (more nodes than the interval resolves).
     pub fn nodes(self, a: f64, b: f64, degree: usize) -> Result<Vec<f64>> {
         crate::error::size_sum("interpolation nodes (degree + 1)", degree, 1)?;
         crate::domain::Interval::named("node interval", a, b)?;
         let n = degree as f64;
-        Ok(match self {
+        let nodes = match self {
             NodeFamily::Equispaced if degree == 0 => vec![0.5 * (a + b)],
             NodeFamily::Equispaced => crate::domain::linspace(a, b, degree + 1),
             NodeFamily::Chebyshev => (0..=degree)
@@ -304,7 +305,12 @@ impl NodeFamily {
                     0.5 * (a + b) - 0.5 * (b - a) * angle.cos()
                 })
                 .collect(),
-        })
+        };
+        check_sites(
+            "interpolation nodes (too many for the interval's width at f64 resolution)",
+            &nodes,
+        )?;
+        Ok(nodes)
     }
 }
 
