@@ -124,10 +124,15 @@ impl ErrorAccumulator {
             diff.push(d);
         }
         let count = (self.patches + 1) as f64;
-        for k in 0..3 {
+        for (k, (sum, mean)) in self
+            .norm_sum
+            .iter_mut()
+            .zip(self.norm_mean.iter_mut())
+            .enumerate()
+        {
             let norm = matlab_norm(&DMatrix::from_fn(r, c, |i, j| diff[i * c + j][k]))?;
-            self.norm_sum[k] += norm;
-            self.norm_mean[k] += (norm - self.norm_mean[k]) / count;
+            *sum += norm;
+            *mean += (norm - *mean) / count;
         }
         for d in &diff {
             self.sum_sq += d.component_mul(d);
