@@ -32,6 +32,14 @@ impl<T> Grid<T> {
         mut f: impl FnMut(usize, usize) -> T,
     ) -> crate::Result<Self> {
         let len = crate::error::size_product("grid cells (rows × cols)", rows, cols)?;
+        if len == 0 {
+            // no cells: nothing to call f for, however many rows or columns
+            return Ok(Self {
+                rows,
+                cols,
+                data: Vec::new(),
+            });
+        }
         let mut data = Vec::with_capacity(len);
         for i in 0..rows {
             for j in 0..cols {

@@ -186,8 +186,9 @@ impl<const N: usize> NurbsCurve<N> {
     /// The power forms are used on a span only where the projection keeps their accuracy:
     /// with `w_min` the smallest (scaled) weight of the span, `Σ wᵢNᵢ ≥ w_min` there, and the
     /// error of `X / W` is at most `6ε (S_X + ‖P‖ S_W) / w_min` for the sizes `S` of the two
-    /// power forms ([`horner::size`]); the span takes the fast path only if that is within
-    /// `TAYLOR_GROWTH · 6ε · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send their
+    /// power forms ([`horner::size`]); the span takes the fast path only if
+    /// `S_W ≤ TAYLOR_GROWTH · w_min` (so `W` keeps its relative accuracy and stays positive)
+    /// and `S_X ≤ TAYLOR_GROWTH · w_min · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send their
     /// spans to point-by-point evaluation as [`ParametricCurve::eval`].
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
         let p = self.basis.degree();
@@ -196,7 +197,7 @@ impl<const N: usize> NurbsCurve<N> {
             ts,
             out,
             |span, t0, width| {
-                let (num, den) = self.homogeneous_on_span(span, horner::seed(t0));
+                let (num, den) = self.homogeneous_on_span(span, horner::seed(t0, width));
                 let (num, den) = (
                     horner::taylor(&num),
                     horner::taylor(&SVector::<_, 1>::new(den)),
@@ -206,9 +207,11 @@ impl<const N: usize> NurbsCurve<N> {
                     .iter()
                     .copied()
                     .fold(f64::INFINITY, f64::min);
-                let growth =
-                    (horner::size(&num, width) + scale * horner::size(&den, width)) / w_min;
-                (growth.is_finite() && growth <= horner::TAYLOR_GROWTH * scale)
+                // the denominator keeps its relative accuracy (so it stays positive, whatever
+                // the points), and the numerator its accuracy relative to the points
+                let (s_num, s_den) = (horner::size(&num), horner::size(&den));
+                let g = horner::TAYLOR_GROWTH * w_min;
+                (s_den.is_finite() && s_den <= g && s_num.is_finite() && s_num <= g * scale)
                     .then_some((num, den))
             },
             |(num, den), h| Self::project((horner::eval(num, h), horner::eval(den, h).x)),

@@ -10,24 +10,29 @@ use num_dual::DualNum;
 /// A 4×4 net of points; `net[i][j]` pairs the `i`-th s basis function with the `j`-th t one.
 pub type Net = [[Vector3<f64>; 4]; 4];
 
-/// The largest magnitude of a net entry, `f64::MAX / 16`: on `[0, 1]²` the Bernstein
-/// weights sum to 1 and the absolute Hermite weights to at most `1.25² < 16`, so no
-/// evaluation of a valid net overflows. (Nets derived from corner data within
-/// [`crate::error::MAX_COORDINATE`] stay below `f64::MAX / 36`.)
+/// The largest magnitude of a Bézier net entry, `f64::MAX / 16`: on `[0, 1]²` the Bernstein
+/// weights sum to 1, so no evaluation of a valid net overflows.
 pub const NET_LIMIT: f64 = f64::MAX / 16.0;
 
-/// Checks every coordinate of a net is finite and within [`NET_LIMIT`].
+/// The largest magnitude of a Hermite matrix entry, `f64::MAX / 32`: the absolute Hermite
+/// weights sum to at most `1.25²` on `[0, 1]²`, and the Bézier net of a Hermite matrix
+/// (correct or as Codice 7 prints it) has entries at most `(1 + 1/3)² < 2` times as large, so
+/// it is a valid net. (Matrices from corner data within [`crate::error::MAX_COORDINATE`] stay
+/// at `f64::MAX / 64`.)
+pub const HERMITE_LIMIT: f64 = f64::MAX / 32.0;
+
+/// Checks every coordinate of a net is finite and at most `limit` in magnitude.
 ///
 /// # Errors
 /// [`crate::Error::NonFinite`] or [`crate::Error::CoordinateTooLarge`].
-pub(crate) fn check_net(what: &'static str, net: &Net) -> crate::Result<()> {
+pub(crate) fn check_net(what: &'static str, net: &Net, limit: f64) -> crate::Result<()> {
     for x in net.iter().flatten().flat_map(|p| p.iter()) {
         crate::error::finite(what, *x)?;
-        if x.abs() > NET_LIMIT {
+        if x.abs() > limit {
             return Err(crate::Error::CoordinateTooLarge {
                 what,
                 value: *x,
-                max: NET_LIMIT,
+                max: limit,
             });
         }
     }

@@ -61,7 +61,7 @@ use splinelab::interp::RESIDUAL_TOLERANCE;
 use splinelab::metrics::ErrorAccumulator;
 use splinelab::report::output::{write_figure, write_table};
 use splinelab::report::FigureId;
-use splinelab::tensor::{Net, NET_LIMIT};
+use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
     de_casteljau_recursive, de_casteljau_surface, hermite_basis, matlab_norm, partials_on_grid,
@@ -743,9 +743,11 @@ fn hermite_cases() -> Vec<Case> {
             )
         }),
         case(
-            "hermite::patch_matrix_at_net_limit_tabulates_finitely",
+            "hermite::patch_matrix_at_hermite_limit_tabulates_finitely",
             || {
-                let p = ok(HermitePatch::try_from_matrix(alternating_net(NET_LIMIT)))?;
+                let p = ok(HermitePatch::try_from_matrix(alternating_net(
+                    HERMITE_LIMIT,
+                )))?;
                 let g = ok(p.tabulate(21, 21))?;
                 ensure!(finite_grid(&g), "tabulation of a valid matrix not finite");
                 let x = p.eval(0.37_f64, 0.81_f64);
@@ -1251,9 +1253,13 @@ fn bezier_cases() -> Vec<Case> {
             );
             Ok(())
         }),
-        case("bezier::from_hermite_at_net_limit_finite", || {
-            let h = ok(HermitePatch::try_from_matrix(alternating_net(NET_LIMIT)))?;
+        case("bezier::from_hermite_at_hermite_limit_finite", || {
+            let h = ok(HermitePatch::try_from_matrix(alternating_net(
+                HERMITE_LIMIT,
+            )))?;
             let b = BezierPatch::from_hermite(&h);
+            // the printed Codice 7 net of the same matrix is a valid net too
+            let _ = splinelab::report_codice7_net(&h);
             ensure!(
                 b.net()
                     .iter()
@@ -2459,11 +2465,25 @@ fn interp_cases() -> Vec<Case> {
                 Error::GapTooSmall { .. }
             )
         }),
-        case("interp::linear_slope_overflows", || {
-            expect_err!(
-                PiecewiseLinear::try_new(&[0.0, 1e-300], &[v1(0.0), v1(1e300)]),
-                Error::Overflow { .. }
-            )
+        case("interp::linear_slope_overflows_values_stay_exact", || {
+            // the slope 1e600 is not representable, but the polygon is: its convex form
+            // reproduces both ends and stays finite in between; only the derivative overflows
+            let p = ok(PiecewiseLinear::try_new(
+                &[0.0, 1e-300],
+                &[v1(0.0), v1(1e300)],
+            ))?;
+            ensure!(
+                p.point(1e-300).x == 1e300,
+                "right end {:?}",
+                p.point(1e-300)
+            );
+            ensure!(p.point(0.0).x == 0.0, "left end {:?}", p.point(0.0));
+            let mid = p.point(0.5e-300).x;
+            ensure!(
+                mid.is_finite() && (mid / 0.5e300 - 1.0).abs() < 1e-15,
+                "middle {mid:e}"
+            );
+            Ok(())
         }),
         case("interp::linear_value_beyond_max_coordinate", || {
             expect_err!(

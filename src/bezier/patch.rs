@@ -39,7 +39,7 @@ impl BezierPatch {
     /// [`crate::Error::NonFinite`] for a NaN or infinite coordinate,
     /// [`crate::Error::CoordinateTooLarge`] beyond [`crate::tensor::NET_LIMIT`].
     pub fn try_from_net(m: Net) -> Result<Self> {
-        crate::tensor::check_net("Bézier control point", &m)?;
+        crate::tensor::check_net("Bézier control point", &m, crate::tensor::NET_LIMIT)?;
         Ok(Self { m })
     }
 

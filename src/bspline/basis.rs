@@ -173,17 +173,21 @@ impl BSplineBasis {
         }
         let t0 = t.re();
         let order = p.min(D::NDERIV);
-        let ders = derivatives_on_span(k, span, p, t0, order);
-        let delta = t - t0;
+        // derivatives with respect to z = (t − t₀)/w, w the span's width: wᵏ N⁽ᵏ⁾ stays of
+        // the size of the values however narrow or wide the span, so nothing over- or
+        // underflows on the way (and the value part is never touched by an overflow)
+        let w = k[span + 1] - k[span];
+        let ders = derivatives_on_span(k, span, p, t0, order, w);
+        let z = (t - t0) / w;
         let mut factorial = vec![1.0; order + 1];
         for j in 1..=order {
             factorial[j] = factorial[j - 1] * j as f64;
         }
         for (j, slot) in out.iter_mut().enumerate() {
-            // Horner in δ: Σₖ N⁽ᵏ⁾ δᵏ / k!
+            // Horner in z: Σₖ (wᵏ N⁽ᵏ⁾) zᵏ / k!
             let mut acc = D::from(ders[order][j] / factorial[order]);
             for q in (0..order).rev() {
-                acc = acc * delta + ders[q][j] / factorial[q];
+                acc = acc * z + ders[q][j] / factorial[q];
             }
             *slot = acc;
         }
@@ -214,13 +218,32 @@ impl BSplineBasis {
     /// ```
     pub fn nonzero_derivatives(&self, t: f64) -> (usize, Vec<[f64; 3]>) {
         let span = self.find_span(t);
-        let d = derivatives_on_span(self.knots.knots(), span, self.degree, t, 2);
+        let d = self.unscaled_derivatives(span, t, 2);
         (
             span,
             (0..=self.degree)
                 .map(|j| [d[0][j], d[1][j], d[2][j]])
                 .collect(),
         )
+    }
+
+    /// `N⁽ᵏ⁾(t)`, `k ≤ order`, on `span`: the scaled derivatives `wᵏ N⁽ᵏ⁾` of
+    /// [`derivatives_on_span`] multiplied `k` times by `1/w` (finite: spans are at least
+    /// `f64::MIN_POSITIVE` wide), so a derivative whose true value overflows is `±∞`, never
+    /// NaN, and a zero stays zero.
+    fn unscaled_derivatives(&self, span: usize, t: f64, order: usize) -> Vec<Vec<f64>> {
+        let k = self.knots.knots();
+        let w = k[span + 1] - k[span];
+        let mut d = derivatives_on_span(k, span, self.degree, t, order, w);
+        let inv = 1.0 / w;
+        for (q, row) in d.iter_mut().enumerate() {
+            for v in row.iter_mut() {
+                for _ in 0..q {
+                    *v *= inv;
+                }
+            }
+        }
+        d
     }
 
     /// The span holding `t` and `N⁽ᵏ⁾(t)` for `k = 0 … order` of its `p + 1` non-zero
@@ -236,10 +259,7 @@ impl BSplineBasis {
             self.degree + 1,
         )?;
         let span = self.find_span(t);
-        Ok((
-            span,
-            derivatives_on_span(self.knots.knots(), span, self.degree, t, order),
-        ))
+        Ok((span, self.unscaled_derivatives(span, t, order)))
     }
 
     /// All `n + 1` basis functions at `t` (zeros outside the span), by the one-pass evaluator.
@@ -297,13 +317,14 @@ impl BSplineBasis {
             for j in 0..=q - d {
                 let m = i + j;
                 let mut value = D::zero();
+                // N / d first: where N = 0 the product is 0 even if (t − tₘ)/d would overflow
                 let d1 = k[m + d] - k[m];
                 if d1 > 0.0 {
-                    value += (t - k[m]) / d1 * level[j];
+                    value += (t - k[m]) * (level[j] / d1);
                 }
                 let d2 = k[m + d + 1] - k[m + 1];
                 if d2 > 0.0 {
-                    value += (-t + k[m + d + 1]) / d2 * level[j + 1];
+                    value += (-t + k[m + d + 1]) * (level[j + 1] / d2);
                 }
                 level[j] = value;
             }
@@ -312,14 +333,24 @@ impl BSplineBasis {
     }
 }
 
-/// `N⁽ᵏ⁾(t)` for `k = 0 … order` of the `p + 1` functions that may be non-zero on span `ℓ`
-/// (`ders[k][j]` for `N_{ℓ−p+j,p}`), by *The NURBS Book* A2.3 (`DersBasisFuns`): the
-/// triangle of A2.2 keeps the lower-degree values `N_{·,p−k}` and the knot differences, and
-/// the `k`-th derivative is `p!/(p−k)! Σⱼ a_{k,j} N_{ℓ−p+k+j… , p−k}` with the coefficients
-/// `a_{k,j}` formed by differences over knot spans of the lower-degree supports. Knot
-/// differences are taken directly from the knots (not as sums of `t − tᵢ` terms). Rows
-/// `k > p` are zero.
-fn derivatives_on_span(k: &[f64], span: usize, p: usize, t: f64, order: usize) -> Vec<Vec<f64>> {
+/// `unitᵏ N⁽ᵏ⁾(t)` for `k = 0 … order` of the `p + 1` functions that may be non-zero on span
+/// `ℓ` (`ders[k][j]` for `N_{ℓ−p+j,p}`): the derivatives with respect to `z = t / unit`, by
+/// *The NURBS Book* A2.3 (`DersBasisFuns`). The triangle of A2.2 keeps the lower-degree
+/// values `N_{·,p−k}` and the knot differences, and the `k`-th derivative is
+/// `p!/(p−k)! Σⱼ a_{k,j} N_{·,p−k}` with the coefficients `a_{k,j}` formed by differences
+/// divided by knot spans of the lower-degree supports — here by those spans measured in
+/// units of `unit`. With `unit` the width of span `ℓ`, every such span is at least one
+/// unit long (each support contains span `ℓ`), so the coefficients stay below `2ᵏ` and
+/// nothing overflows, however close the knots. Knot differences are taken directly from the
+/// knots (not as sums of `t − tᵢ` terms). Rows `k > p` are zero.
+fn derivatives_on_span(
+    k: &[f64],
+    span: usize,
+    p: usize,
+    t: f64,
+    order: usize,
+    unit: f64,
+) -> Vec<Vec<f64>> {
     // ndu[j][r], r ≤ j: lower triangle holds knot differences, upper (r > j ... ) basis values:
     // ndu[r][j] = N_{ℓ−j+r, j}(t) for r ≤ j, ndu[j][r] = t_{ℓ+r+1} − t_{ℓ+1+r−j} for r < j
     let mut ndu = vec![vec![0.0; p + 1]; p + 1];
@@ -349,20 +380,22 @@ fn derivatives_on_span(k: &[f64], span: usize, p: usize, t: f64, order: usize) -
             let mut d = 0.0;
             let rk = r as isize - kk as isize;
             let pk = p - kk;
+            // a knot span of the lower-degree support, in units
+            let gap = |idx: usize| ndu[pk + 1][idx] / unit;
             if r >= kk {
                 let rk = rk as usize;
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                a[s2][0] = a[s1][0] / gap(rk);
                 d = a[s2][0] * ndu[rk][pk];
             }
             let j1: usize = if rk >= -1 { 1 } else { (-rk) as usize };
             let j2: usize = if r <= pk + 1 { kk - 1 } else { p - r };
             for j in j1..=j2 {
                 let idx = (rk + j as isize) as usize;
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / gap(idx);
                 d += a[s2][j] * ndu[idx][pk];
             }
             if r <= pk {
-                a[s2][kk] = -a[s1][kk - 1] / ndu[pk + 1][r];
+                a[s2][kk] = -a[s1][kk - 1] / gap(r);
                 d += a[s2][kk] * ndu[r][pk];
             }
             ders[kk][r] = d;

@@ -108,11 +108,11 @@ impl<const N: usize> BSplineCurve<N> {
     /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
     /// degrees evaluate the basis at every point.
     ///
-    /// The power form is used on a span only where it is as accurate as the basis form:
-    /// its coefficients must be finite and `Σₖ ‖cₖ‖ wᵏ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` over the
-    /// span's width `w` and control points (see [`horner::safe`]); elsewhere (control points
-    /// near the overflow threshold, say) the span is evaluated point by point as
-    /// [`ParametricCurve::eval`] does.
+    /// The power form is taken in the scaled variable `s = (t − t_ℓ)/w` of each span (`w` its
+    /// width), so its coefficients are of the size of the control points however narrow or
+    /// wide the span, and it is used only where it is as accurate as the basis form: finite
+    /// coefficients with `Σₖ ‖c̃ₖ‖ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` (see [`horner::safe`]);
+    /// elsewhere the span is evaluated point by point as [`ParametricCurve::eval`] does.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
         let p = self.basis.degree();
         walk_spans(
@@ -120,9 +120,9 @@ impl<const N: usize> BSplineCurve<N> {
             ts,
             out,
             |span, t0, width| {
-                let c = horner::taylor(&self.eval_on_span(span, horner::seed(t0)));
+                let c = horner::taylor(&self.eval_on_span(span, horner::seed(t0, width)));
                 let scale = horner::max_norm(&self.points[span - p..=span]);
-                horner::safe(&c, width, scale).then_some(c)
+                horner::safe(&c, scale).then_some(c)
             },
             horner::eval,
             |span, t| self.eval_on_span(span, t),
@@ -144,7 +144,7 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
 
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
 /// into `out` (cleared first): for degree ≤ 3, `piece(ℓ, t_ℓ, w)` forms span `ℓ`'s data once
-/// (`w` the span's width), and `at(piece, t − t_ℓ)` evaluates each point; where `piece`
+/// (`w` the span's width), and `at(piece, (t − t_ℓ)/w)` evaluates each point; where `piece`
 /// declines (`None`: its fast form would lose accuracy) and above degree 3, `direct(ℓ, t)`
 /// evaluates each point.
 pub(crate) fn walk_spans<T, P>(
@@ -166,7 +166,7 @@ pub(crate) fn walk_spans<T, P>(
                 data = form(&cursor);
             }
             match &data {
-                Some(d) => at(d, t - cursor.start()),
+                Some(d) => at(d, (t - cursor.start()) * cursor.inv_width),
                 None => direct(cursor.span(), t),
             }
         }));
@@ -185,6 +185,8 @@ struct SpanCursor<'a> {
     span: usize,
     lo: f64,
     hi: f64,
+    /// `1 / (hi − lo)`, finite: knot gaps are at least `f64::MIN_POSITIVE`.
+    inv_width: f64,
 }
 
 impl<'a> SpanCursor<'a> {
@@ -195,6 +197,7 @@ impl<'a> SpanCursor<'a> {
             span: 0,
             lo: 0.0,
             hi: 0.0,
+            inv_width: 0.0,
         };
         cursor.enter(basis.find_span(basis.domain().0));
         cursor
@@ -205,6 +208,7 @@ impl<'a> SpanCursor<'a> {
         self.span = span;
         self.lo = k[span];
         self.hi = k[span + 1];
+        self.inv_width = 1.0 / (self.hi - self.lo);
     }
 
     /// The current span `ℓ`.

@@ -48,9 +48,9 @@ impl HermitePatch {
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a NaN or infinite entry, [`Error::CoordinateTooLarge`] beyond
-    /// [`crate::tensor::NET_LIMIT`].
+    /// [`crate::tensor::HERMITE_LIMIT`].
     pub fn try_from_matrix(c: Net) -> Result<Self> {
-        crate::tensor::check_net("Hermite matrix entry", &c)?;
+        crate::tensor::check_net("Hermite matrix entry", &c, crate::tensor::HERMITE_LIMIT)?;
         Ok(Self { c })
     }
 

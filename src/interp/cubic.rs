@@ -60,8 +60,10 @@ impl<const N: usize> EndCondition<N> {
     }
 }
 
-/// Relative tolerance for "the ends of periodic data match": `|y₀ − y_n| ≤ 1e-12 · max(1, |y₀|)`
-/// per coordinate (data read from files rarely repeat the first point bit for bit).
+/// Relative tolerance for "the ends of periodic data match":
+/// `‖y₀ − y_n‖_∞ ≤ 1e-12 · max ‖yᵢ‖_∞` (data read from files rarely repeat the first point bit
+/// for bit). `y_n` is then replaced by `y₀`, so the spline misses `y_n` by at most this much
+/// of the data scale — within [`crate::interp::RESIDUAL_TOLERANCE`].
 pub const PERIODIC_MATCH: f64 = 1e-12;
 
 /// An interpolating cubic spline `s : [x₀, x_n] → ℝᴺ` (`N = 1`: a spline function `y(x)`;
@@ -142,9 +144,9 @@ impl<const N: usize> CubicSpline<N> {
         Ok(spline)
     }
 
-    /// Checks what the build derived: every piece's data (`yᵢ`, and `Mᵢ hᵢ²/6` in the moment
-    /// form) are finite, and so is the bound `|yᵢ| + |yᵢ₊₁| + (|Mᵢ| + |Mᵢ₊₁|) hᵢ²/6 · 2` of the
-    /// piece on its interval, so every evaluation in the domain is finite. Interpolation
+    /// Checks what the build derived: every moment is finite, and so is the bound
+    /// `|yᵢ| + |yᵢ₊₁| + (|Mᵢ| + |Mᵢ₊₁|) hᵢ²/6` of the piece on its interval, so every
+    /// evaluation in the domain is finite. Interpolation
     /// itself needs no check: the moment form reproduces `yᵢ` and `yᵢ₊₁` exactly.
     ///
     /// # Errors
@@ -153,10 +155,11 @@ impl<const N: usize> CubicSpline<N> {
     fn verify(&self) -> Result<()> {
         for i in 0..self.x.len() - 1 {
             let p = self.piece(i);
-            let finite = [p.m0, p.m1, self.m[i], self.m[i + 1]]
+            let finite = [self.m[i], self.m[i + 1]]
                 .iter()
                 .all(|v| v.iter().all(|x| x.is_finite()));
-            let bound = p.y0.amax() + p.y1.amax() + 2.0 * (p.m0.amax() + p.m1.amax());
+            // |d e| ≤ h²/4 and |1 + u|, |1 + v| ≤ 2 on the piece
+            let bound = p.y0.amax() + p.y1.amax() + (p.m0.amax() + p.m1.amax()) * p.h * p.h;
             if !(finite && bound.is_finite()) {
                 return Err(Error::Overflow {
                     what: "cubic spline piece (moments Mᵢ hᵢ²/6 and values)",
@@ -202,15 +205,14 @@ impl<const N: usize> CubicSpline<N> {
 
     /// The data of piece `i` on `[xᵢ, xᵢ₊₁]` for the moment form.
     fn piece(&self, i: usize) -> Piece<N> {
-        let h = self.x[i + 1] - self.x[i];
-        let k = h * h / 6.0;
         Piece {
             x0: self.x[i],
-            h,
+            x1: self.x[i + 1],
+            h: self.x[i + 1] - self.x[i],
             y0: self.y[i],
             y1: self.y[i + 1],
-            m0: self.m[i] * k,
-            m1: self.m[i + 1] * k,
+            m0: self.m[i] / 6.0,
+            m1: self.m[i + 1] / 6.0,
         }
     }
 
@@ -294,15 +296,21 @@ impl CubicSpline<1> {
     }
 }
 
-/// One piece of a cubic spline in moment form: `s = y₀ v + y₁ u − u v [m₀ (1 + v) + m₁ (1 + u)]`
-/// with `u = (x − x₀)/h`, `v = 1 − u` and the scaled moments `mₖ = Mₖ h²/6`.
+/// One piece of a cubic spline in moment form,
+/// `s = y₀ v + y₁ u − [M₀ (1 + v) + M₁ (1 + u)] d e / 6` with `d = x − x₀`, `e = x₁ − x`,
+/// `u = d/h`, `v = 1 − u` (`u v h² = d e`, so this is the form of [`CubicSpline`]). Written
+/// with `d e` rather than `u v h²`, no intermediate carries a factor `1/h²`: second
+/// derivatives of pieces narrower than `10⁻¹⁵⁴` stay finite.
 #[derive(Debug, Clone, Copy)]
 struct Piece<const N: usize> {
     x0: f64,
+    x1: f64,
     h: f64,
     y0: SVector<f64, N>,
     y1: SVector<f64, N>,
+    /// `M₀ / 6`.
     m0: SVector<f64, N>,
+    /// `M₁ / 6`.
     m1: SVector<f64, N>,
 }
 
@@ -310,11 +318,23 @@ impl<const N: usize> Piece<N> {
     /// `s(x)` for any number type (the piece's polynomial, also outside its interval).
     #[inline]
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
-        let u = (x - self.x0) / self.h;
+        let d = x - self.x0;
+        let e = -x + self.x1;
+        let u = d / self.h;
         let v = -u + 1.0;
         let lift = |w: &SVector<f64, N>| w.map(D::from);
-        lift(&self.y0) * v + lift(&self.y1) * u
-            - (lift(&self.m0) * (v + 1.0) + lift(&self.m1) * (u + 1.0)) * (u * v)
+        let chord = crate::interp::chord(&self.y0, &self.y1, u);
+        // The same product in the order that keeps every intermediate, value and derivative
+        // parts alike, within the size of the true value: on a wide piece (h ≥ 1) the moments
+        // first, ((M/6)(1 + v) · d) · e, so d e never overflows before it is scaled; on a narrow
+        // one (M/6) · ((1 + v) · d e), so the factor 1/h in the derivative of 1 + v meets
+        // d e ≤ h²/4 before it meets a large moment.
+        if self.h >= 1.0 {
+            chord - (lift(&self.m0) * (v + 1.0) + lift(&self.m1) * (u + 1.0)) * d * e
+        } else {
+            let de = d * e;
+            chord - (lift(&self.m0) * ((v + 1.0) * de) + lift(&self.m1) * ((u + 1.0) * de))
+        }
     }
 }
 
@@ -352,7 +372,8 @@ pub(crate) fn check_spline_data<const N: usize>(
         }
         EndCondition::Periodic => {
             let (first, last) = (y[0], y[y.len() - 1]);
-            if (first - last).amax() > PERIODIC_MATCH * first.amax().max(1.0) {
+            let scale = y.iter().map(|p| p.amax()).fold(0.0, f64::max);
+            if (first - last).amax() > PERIODIC_MATCH * scale {
                 return Err(Error::PeriodicEndsMismatch {
                     distance: (first - last).norm(),
                 });

@@ -8,7 +8,9 @@ use nalgebra::SVector;
 use num_dual::DualNum;
 
 /// The polygon through `(xᵢ, yᵢ)`: `p(x) = yₖ + (x − xₖ)(yₖ₊₁ − yₖ)/(xₖ₊₁ − xₖ)` on
-/// `[xₖ, xₖ₊₁]` (seed 001). Continuous, with a derivative that jumps at the nodes.
+/// `[xₖ, xₖ₊₁]` (seed 001), evaluated as the chord `(1 − u) yₖ + u yₖ₊₁`,
+/// `u = (x − xₖ)/(xₖ₊₁ − xₖ)`, exact at both nodes.
+/// Continuous, with a derivative that jumps at the nodes.
 ///
 /// # Examples
 /// ```
@@ -29,7 +31,7 @@ impl<const N: usize> PiecewiseLinear<N> {
     /// # Errors
     /// [`Error::CountMismatch`], [`Error::TooFewPoints`] (below 2), [`Error::NonFinite`],
     /// [`Error::RepeatedParameter`], [`Error::NotIncreasing`], [`Error::GapTooSmall`],
-    /// [`Error::CoordinateTooLarge`]; [`Error::Overflow`] for a slope that overflows.
+    /// [`Error::CoordinateTooLarge`].
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
         if x.len() != y.len() {
             return Err(Error::CountMismatch {
@@ -47,11 +49,6 @@ impl<const N: usize> PiecewiseLinear<N> {
         }
         check_sites("piecewise linear abscissae", x)?;
         finite_points("piecewise linear value", y)?;
-        // the slopes evaluation uses must be representable
-        for k in 0..x.len() - 1 {
-            let slope = (y[k + 1] - y[k]) / (x[k + 1] - x[k]);
-            crate::error::derived_points("piecewise linear slope", &[slope])?;
-        }
         Ok(Self {
             x: x.to_vec(),
             y: y.to_vec(),
@@ -73,8 +70,10 @@ impl<const N: usize> ParametricCurve<N> for PiecewiseLinear<N> {
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
         let inner = &self.x[1..self.x.len() - 1];
         let k = inner.partition_point(|&node| node <= x.re());
-        let slope = (self.y[k + 1] - self.y[k]) / (self.x[k + 1] - self.x[k]);
-        self.y[k].map(D::from) + slope.map(D::from) * (x - self.x[k])
+        // the chord in u = (x − xₖ)/(xₖ₊₁ − xₖ): exact at both nodes, and no slope that could
+        // over- or underflow
+        let u = (x - self.x[k]) / (self.x[k + 1] - self.x[k]);
+        crate::interp::chord(&self.y[k], &self.y[k + 1], u)
     }
 
     /// `[x₀, x_n]`.

@@ -8,6 +8,8 @@ pub mod param;
 pub mod polynomial;
 
 use crate::error::{finite, Error, Result};
+use nalgebra::SVector;
+use num_dual::DualNum;
 
 /// The relative residual an interpolant may leave at its own data before it is refused:
 /// `max |s(xᵢ) − yᵢ| ≤ RESIDUAL_TOLERANCE · max |yᵢ|` (absolute when all data are 0), for
@@ -41,6 +43,25 @@ pub(crate) fn accept_residual(what: &'static str, residual: f64) -> Result<()> {
             residual,
             tolerance: RESIDUAL_TOLERANCE,
         })
+    }
+}
+
+/// The chord `y₀ (1 − u) + y₁ u` between two values, written as `y₀ + (y₁ − y₀) u` on the
+/// first half and `y₁ − (y₁ − y₀)(1 − u)` on the second: exact at both ends (`u = 0`, `u = 1`),
+/// and its derivative part is the one product `(y₁ − y₀) u′`, never the difference of two
+/// large products `y₁ u′ − y₀ u′` (which is NaN where `|y| / h` overflows although the slope
+/// is 0).
+#[inline]
+pub(crate) fn chord<D: DualNum<Primitive = f64> + Copy, const N: usize>(
+    y0: &SVector<f64, N>,
+    y1: &SVector<f64, N>,
+    u: D,
+) -> SVector<D, N> {
+    let diff = (y1 - y0).map(D::from);
+    if u.re() <= 0.5 {
+        y0.map(D::from) + diff * u
+    } else {
+        y1.map(D::from) - diff * (-u + 1.0)
     }
 }
 

@@ -172,6 +172,8 @@ pub struct Lagrange {
     scale: f64,
     /// Barycentric weights scaled to `max |wᵢ| = 1`.
     w: Vec<f64>,
+    /// `ln max |wᵢ|` of the unscaled weights (for the first barycentric form).
+    log_top: f64,
 }
 
 impl Lagrange {
@@ -216,6 +218,7 @@ impl Lagrange {
             y: y.iter().map(|v| v / scale).collect(),
             scale,
             w,
+            log_top: top,
         };
         check_residual("Lagrange interpolation", x, y, |t| p.eval(t))?;
         Ok(p)
@@ -226,12 +229,16 @@ impl Lagrange {
         &self.x
     }
 
+    /// The index of the node nearest to `x`.
+    fn nearest(&self, x: f64) -> usize {
+        (0..self.x.len())
+            .min_by(|&a, &b| (self.x[a] - x).abs().total_cmp(&(self.x[b] - x).abs()))
+            .unwrap_or(0)
+    }
+
     /// The scaled barycentric terms `λᵢ` at `t` (see [`Lagrange`]): `ℓᵢ(t) = λᵢ / Σⱼ λⱼ`.
     fn lambdas<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
-        let x0 = t.re();
-        let k = (0..self.x.len())
-            .min_by(|&a, &b| (self.x[a] - x0).abs().total_cmp(&(self.x[b] - x0).abs()))
-            .unwrap_or(0);
+        let k = self.nearest(t.re());
         let near = t - self.x[k];
         (0..self.x.len())
             .map(|i| {
@@ -251,16 +258,54 @@ impl Lagrange {
         l.into_iter().map(|v| v * total).collect()
     }
 
-    /// `p(t) = Σ yᵢ ℓᵢ(t)`.
+    /// `p(t) = Σ yᵢ ℓᵢ(t)`: the second barycentric form; where its denominator `Σ λᵢ` has
+    /// cancelled by more than 8 digits (extreme node geometry, where the second form is not
+    /// stable) the first form instead ([`Lagrange::first_form`], backward stable, Higham
+    /// 2004).
     pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
         let l = self.lambdas(t);
-        let (num, den) = l
+        let (num, den, size) = l
             .iter()
             .zip(&self.y)
-            .fold((D::zero(), D::zero()), |(num, den), (&v, &y)| {
-                (num + v * y, den + v)
+            .fold((D::zero(), D::zero(), 0.0), |(num, den, size), (&v, &y)| {
+                (num + v * y, den + v, size + v.re().abs())
             });
-        num / den * self.scale
+        let d = den.re();
+        if d.is_finite() && d.abs() > 1e-8 * size {
+            num / den * self.scale
+        } else {
+            self.first_form(t)
+        }
+    }
+
+    /// The first (modified Lagrange) barycentric form,
+    /// `p(t) = ℓ(t) Σᵢ wᵢ yᵢ / (t − tᵢ)`, `ℓ(t) = Πⱼ (t − tⱼ)`, written around the nearest node
+    /// `t_k` as `e^{ln W} ℓ_{≠k}(t) [w_k y_k + (t − t_k) Σ_{i≠k} wᵢ yᵢ / (t − tᵢ)]` (scaled
+    /// weights `wᵢ`, `W = max` of the unscaled ones), with the magnitude of
+    /// `W ℓ_{≠k}(t)` formed from logarithms so that it neither overflows nor underflows
+    /// before it is applied (saturated at `f64::MAX`, where the interpolant itself overflows).
+    fn first_form<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
+        let x0 = t.re();
+        let k = self.nearest(x0);
+        let near = t - self.x[k];
+        let mut bracket = D::from(self.w[k] * self.y[k]);
+        let mut sum = D::zero();
+        let mut unit = D::one(); // Π_{j≠k} (t − tⱼ)/|x₀ − tⱼ|, of size 1
+        let mut log = self.log_top;
+        for (j, &xj) in self.x.iter().enumerate() {
+            if j == k {
+                continue;
+            }
+            let diff = t - xj;
+            sum += diff.recip() * (self.w[j] * self.y[j]);
+            let magnitude = (x0 - xj).abs();
+            unit *= diff / magnitude;
+            log += magnitude.ln();
+        }
+        bracket += near * sum;
+        let factor = log.exp().min(f64::MAX);
+        // left to right: a zero bracket stays zero, never 0 · ∞
+        bracket * unit * factor * self.scale
     }
 }
 
