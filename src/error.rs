@@ -395,6 +395,14 @@ pub(crate) fn finite_points<const N: usize>(
     what: &'static str,
     points: &[nalgebra::SVector<f64, N>],
 ) -> Result<()> {
+    // one branch-free pass for the common case (NaN fails the comparison too)
+    let ok = points
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(true, |ok, x| ok & (x.abs() <= MAX_COORDINATE));
+    if ok {
+        return Ok(());
+    }
     for p in points {
         for &x in p.iter() {
             coordinate(what, x)?;

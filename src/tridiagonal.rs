@@ -26,6 +26,9 @@ pub(crate) struct Row {
 /// solves (*Numerical Recipes* §2.7). Fewer than 3 unknowns with corners, where the corners
 /// overlap the band, are solved densely.
 ///
+/// Returns the largest `‖xᵢ‖₁` of the solution (NaN if any entry is NaN), gathered while
+/// the solution is written, so a caller that bounds its pieces needs no pass of its own.
+///
 /// # Errors
 /// [`Error::SingularSystem`] on a zero or non-finite pivot.
 pub(crate) fn solve<const N: usize>(
@@ -33,17 +36,18 @@ pub(crate) fn solve<const N: usize>(
     rhs: impl Fn(usize) -> SVector<f64, N>,
     corners: Option<(f64, f64)>,
     out: &mut [SVector<f64, N>],
-) -> Result<()> {
+) -> Result<f64> {
     let n = out.len();
     if n == 0 {
-        return Ok(());
+        return Ok(0.0);
     }
     let mut scratch = Vec::new();
     let Some((beta, alpha)) = corners else {
         return thomas(&row, &rhs, &mut scratch, out);
     };
     if n < 3 {
-        return solve_dense(&row, &rhs, (beta, alpha), out);
+        solve_dense(&row, &rhs, (beta, alpha), out)?;
+        return Ok(out.iter().fold(0.0, |m, x| nan_max(m, l1(x))));
     }
     // A = B + u vᵀ with u = (γ, 0, …, 0, α)ᵀ, v = (1, 0, …, 0, β/γ)ᵀ, B = A − u vᵀ
     let gamma = -row(0).diag;
@@ -76,10 +80,28 @@ pub(crate) fn solve<const N: usize>(
         });
     }
     let factor = (out[0] + out[n - 1] * (beta / gamma)) / denom;
+    let mut largest = 0.0;
     for (x, zi) in out.iter_mut().zip(&z) {
         *x -= factor * zi.x;
+        largest = nan_max(largest, l1(x));
     }
-    Ok(())
+    Ok(largest)
+}
+
+/// `‖x‖₁`, NaN-propagating.
+#[inline]
+fn l1<const N: usize>(x: &SVector<f64, N>) -> f64 {
+    x.iter().fold(0.0, |a, c| a + c.abs())
+}
+
+/// `max(a, b)`, NaN if either is (`f64::max` would drop a NaN).
+#[inline]
+fn nan_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
 }
 
 /// Dense LU for tiny cyclic systems.
@@ -123,7 +145,7 @@ fn thomas<const N: usize>(
     rhs: &impl Fn(usize) -> SVector<f64, N>,
     scratch: &mut Vec<f64>,
     out: &mut [SVector<f64, N>],
-) -> Result<()> {
+) -> Result<f64> {
     let n = out.len();
     scratch.clear();
     scratch.resize(n, 0.0);
@@ -149,11 +171,13 @@ fn thomas<const N: usize>(
         c[i] = prev_c;
         out[i] = prev_d;
     }
+    let mut largest = l1(&out[n - 1]);
     for i in (0..n - 1).rev() {
         let next = out[i + 1];
         out[i] -= next * c[i];
+        largest = nan_max(largest, l1(&out[i]));
     }
-    Ok(())
+    Ok(largest)
 }
 
 #[cfg(test)]

@@ -161,21 +161,38 @@ pub(crate) fn walk_spans<T, P>(
     if basis.degree() <= horner::TAYLOR_DEGREE {
         let form = |c: &SpanCursor| piece(c.span(), c.start(), c.width());
         let mut data = form(&cursor);
-        out.extend(ts.iter().map(|&t| {
-            if cursor.advance(t) {
+        let mut i = 0;
+        while i < ts.len() {
+            if cursor.advance(ts[i]) {
                 data = form(&cursor);
             }
+            // the run of parameters that stay in this span (at least ts[i], which may be the
+            // right end b or outside the domain), evaluated in one branch-free loop
+            let (lo, hi, inv) = (cursor.start(), cursor.hi, cursor.inv_width);
+            let run = 1 + ts[i + 1..]
+                .iter()
+                .position(|&t| !(lo <= t && t < hi))
+                .unwrap_or(ts.len() - i - 1);
+            let chunk = &ts[i..i + run];
             match &data {
-                Some(d) => at(d, (t - cursor.start()) * cursor.inv_width),
-                None => direct(cursor.span(), t),
+                Some(d) => out.extend(chunk.iter().map(|&t| at(d, (t - lo) * inv))),
+                None => out.extend(chunk.iter().map(|&t| fallback(&direct, cursor.span(), t))),
             }
-        }));
+            i += run;
+        }
     } else {
         out.extend(ts.iter().map(|&t| {
             cursor.advance(t);
             direct(cursor.span(), t)
         }));
     }
+}
+
+/// The point-by-point evaluation of a span the fast path declined, kept out of line so that
+/// the fast loop stays small.
+#[inline(never)]
+fn fallback<T>(direct: &impl Fn(usize, f64) -> T, span: usize, t: f64) -> T {
+    direct(span, t)
 }
 
 /// Walks a sequence of parameters span by span: each search starts from the previous span, so

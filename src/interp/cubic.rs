@@ -4,7 +4,7 @@
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
 use crate::interp::param::Parametrization;
-use crate::interp::{check_sites, IntervalCursor};
+use crate::interp::IntervalCursor;
 use crate::tridiagonal::{solve, Row};
 use nalgebra::{SVector, Vector1};
 use num_dual::{Dual2_64, DualNum};
@@ -128,19 +128,19 @@ impl<const N: usize> CubicSpline<N> {
 
     /// [`CubicSpline::try_new`] taking ownership of the values.
     fn build(x: &[f64], mut y: Vec<SVector<f64, N>>, end: EndCondition<N>) -> Result<Self> {
-        check_spline_data(x, &y, &end)?;
+        let widest = check_spline_data(x, &y, &end)?;
         let n = x.len() - 1;
         if let EndCondition::Periodic = end {
             y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
-        let m = moments(x, &y, &end)?;
+        let (m, largest) = moments(x, &y, &end)?;
         let spline = Self {
             x: x.to_vec(),
             y,
             m,
             end,
         };
-        spline.verify()?;
+        spline.verify(widest, largest)?;
         Ok(spline)
     }
 
@@ -152,22 +152,30 @@ impl<const N: usize> CubicSpline<N> {
     /// # Errors
     /// [`Error::Overflow`] for a moment, scaled moment or bound that is not finite (slopes
     /// `Δy/h` that overflow, say).
-    fn verify(&self) -> Result<()> {
-        for i in 0..self.x.len() - 1 {
-            let p = self.piece(i);
-            let finite = [self.m[i], self.m[i + 1]]
-                .iter()
-                .all(|v| v.iter().all(|x| x.is_finite()));
-            // |d e| ≤ h²/4 and |1 + u|, |1 + v| ≤ 2 on the piece
-            let bound = p.y0.amax() + p.y1.amax() + (p.m0.amax() + p.m1.amax()) * p.h * p.h;
-            if !(finite && bound.is_finite()) {
-                return Err(Error::Overflow {
-                    what: "cubic spline piece (moments Mᵢ hᵢ²/6 and values)",
-                    value: bound,
-                });
-            }
+    ///
+    /// `widest` is the largest gap of the abscissae and `largest` the largest `‖Mᵢ‖₁` (both
+    /// known from the build): where `2 · largest · widest² ≤ f64::MAX / 4` every bound is
+    /// finite (the values are within `MAX_COORDINATE`) and no pass over the pieces is needed.
+    fn verify(&self, widest: f64, largest: f64) -> Result<()> {
+        // ‖·‖₁ (≥ ‖·‖_∞) keeps a NaN, which amax would drop
+        let l1 = |v: &SVector<f64, N>| v.iter().fold(0.0, |a: f64, c| a + c.abs());
+        // NaN fails the comparison
+        if 2.0 * largest * widest * widest <= f64::MAX / 4.0 {
+            return Ok(());
         }
-        Ok(())
+        // |d e| ≤ h²/4 and |1 + u|, |1 + v| ≤ 2 on the piece; a NaN or infinite moment makes
+        // the bound non-finite too (as does an infinite one times an underflowed h²)
+        let bound = |i: usize| {
+            let h = self.x[i + 1] - self.x[i];
+            l1(&self.y[i]) + l1(&self.y[i + 1]) + (l1(&self.m[i]) + l1(&self.m[i + 1])) * h * h
+        };
+        match (0..self.x.len() - 1).find(|&i| !bound(i).is_finite()) {
+            None => Ok(()),
+            Some(i) => Err(Error::Overflow {
+                what: "cubic spline piece (moments Mᵢ hᵢ²/6 and values)",
+                value: bound(i),
+            }),
+        }
     }
 
     /// The interpolating spline curve through `points` at parameters chosen by `param`
@@ -230,29 +238,34 @@ impl<const N: usize> CubicSpline<N> {
         [d1a, d2a, d1b, d2b]
     }
 
-    /// Evaluates at every `x` of `xs`, in order, handing each value to `emit`. For sorted
-    /// input the interval search costs a comparison or two per point and each piece's data
-    /// are gathered once. The same formula as [`CubicSpline::eval`].
-    fn for_each_value(&self, xs: &[f64], mut emit: impl FnMut(SVector<f64, N>)) {
+    /// Evaluates at every `x` of `xs`, in order, appending `map(s(x))` to `out`. For sorted
+    /// input the interval search costs a comparison or two per run of points in one piece,
+    /// each piece's data are gathered once, and each run is evaluated in one branch-free
+    /// loop. The same formula as [`CubicSpline::eval`].
+    fn extend_values<T>(&self, xs: &[f64], out: &mut Vec<T>, map: impl Fn(SVector<f64, N>) -> T) {
+        out.reserve(xs.len());
         let mut cursor = IntervalCursor::new(&self.x);
-        let mut current = usize::MAX;
-        let mut piece = self.piece(0);
-        for &x in xs {
-            let i = cursor.find(x);
-            if i != current {
-                current = i;
-                piece = self.piece(i);
-            }
-            emit(piece.eval(x));
+        let mut k = 0;
+        while k < xs.len() {
+            let i = cursor.find(xs[k]);
+            let piece = self.piece(i);
+            // the run that stays in [xᵢ, xᵢ₊₁) (at least xs[k], which may be the right end or
+            // outside the domain)
+            let (lo, hi) = (self.x[i], self.x[i + 1]);
+            let run = 1 + xs[k + 1..]
+                .iter()
+                .position(|&x| !(lo <= x && x < hi))
+                .unwrap_or(xs.len() - k - 1);
+            out.extend(xs[k..k + run].iter().map(|&x| map(piece.eval(x))));
+            k += run;
         }
     }
 
     /// Evaluates at every `x` of `xs` into `out` (cleared first); see
-    /// [`CubicSpline::for_each_value`] for the cost.
+    /// [`CubicSpline::extend_values`] for the cost.
     pub fn eval_many(&self, xs: &[f64], out: &mut Vec<SVector<f64, N>>) {
         out.clear();
-        out.reserve(xs.len());
-        self.for_each_value(xs, |v| out.push(v));
+        self.extend_values(xs, out, |v| v);
     }
 }
 
@@ -291,8 +304,7 @@ impl CubicSpline<1> {
     /// for scalars.
     pub fn values_into(&self, xs: &[f64], out: &mut Vec<f64>) {
         out.clear();
-        out.reserve(xs.len());
-        self.for_each_value(xs, |v| out.push(v.x));
+        self.extend_values(xs, out, |v| v.x);
     }
 }
 
@@ -323,6 +335,12 @@ impl<const N: usize> Piece<N> {
         let u = d / self.h;
         let v = -u + 1.0;
         let lift = |w: &SVector<f64, N>| w.map(D::from);
+        if D::NDERIV == 0 {
+            // plain numbers: the convex chord and one product order (only derivative parts need
+            // the care below); branch-free, so batch evaluation vectorizes
+            return lift(&self.y0) * v + lift(&self.y1) * u
+                - (lift(&self.m0) * (v + 1.0) + lift(&self.m1) * (u + 1.0)) * d * e;
+        }
         let chord = crate::interp::chord(&self.y0, &self.y1, u);
         // The same product in the order that keeps every intermediate, value and derivative
         // parts alike, within the size of the true value: on a wide piece (h ≥ 1) the moments
@@ -349,7 +367,7 @@ pub(crate) fn check_spline_data<const N: usize>(
     x: &[f64],
     y: &[SVector<f64, N>],
     end: &EndCondition<N>,
-) -> Result<()> {
+) -> Result<f64> {
     if x.len() != y.len() {
         return Err(Error::CountMismatch {
             what: "values (one per abscissa)",
@@ -364,11 +382,11 @@ pub(crate) fn check_spline_data<const N: usize>(
             got: x.len(),
         });
     }
-    check_sites("cubic spline abscissae", x)?;
+    let widest = crate::interp::check_sites_gap("cubic spline abscissae", x)?;
     finite_points("cubic spline value", y)?;
     match end {
         EndCondition::Clamped { start, end } => {
-            finite_points("clamped end derivative", &[*start, *end])
+            finite_points("clamped end derivative", &[*start, *end])?;
         }
         EndCondition::Periodic => {
             let (first, last) = (y[0], y[y.len() - 1]);
@@ -378,10 +396,10 @@ pub(crate) fn check_spline_data<const N: usize>(
                     distance: (first - last).norm(),
                 });
             }
-            Ok(())
         }
-        EndCondition::Natural | EndCondition::Anticyclic => Ok(()),
+        EndCondition::Natural | EndCondition::Anticyclic => {}
     }
+    Ok(widest)
 }
 
 /// The moments `M₀ … M_n` of the spline through `(xᵢ, yᵢ)` with end condition `end`; the
@@ -390,7 +408,7 @@ fn moments<const N: usize>(
     x: &[f64],
     y: &[SVector<f64, N>],
     end: &EndCondition<N>,
-) -> Result<Vec<SVector<f64, N>>> {
+) -> Result<(Vec<SVector<f64, N>>, f64)> {
     let n = x.len() - 1;
     let h = |i: usize| x[i + 1] - x[i];
     let delta = |i: usize| (y[i + 1] - y[i]) / h(i);
@@ -402,10 +420,12 @@ fn moments<const N: usize>(
     };
     let interior_rhs = |i: usize| (delta(i) - delta(i - 1)) * 6.0;
     let mut m = vec![SVector::<f64, N>::zeros(); n + 1];
+    // the largest ‖Mᵢ‖₁, tracked by the solver (M_n = ±M₀ adds nothing new)
+    let largest: f64;
     match end {
         EndCondition::Natural => {
             // unknowns M₁ … M_{n−1}; M₀ = M_n = 0
-            solve(
+            largest = solve(
                 |r| interior(r + 1),
                 |r| interior_rhs(r + 1),
                 None,
@@ -441,7 +461,7 @@ fn moments<const N: usize>(
                     interior_rhs(i)
                 }
             };
-            solve(row, rhs, None, &mut m)?;
+            largest = solve(row, rhs, None, &mut m)?;
         }
         EndCondition::Periodic | EndCondition::Anticyclic => {
             // unknowns M₀ … M_{n−1}; M_n = σM₀ with σ = +1 (periodic) or −1 (anticyclic).
@@ -476,9 +496,9 @@ fn moments<const N: usize>(
                 }
             };
             let corner = sigma * h(n - 1);
-            solve(row, rhs, Some((corner, corner)), &mut m[..n])?;
+            largest = solve(row, rhs, Some((corner, corner)), &mut m[..n])?;
             m[n] = m[0] * sigma;
         }
     }
-    Ok(m)
+    Ok((m, largest))
 }

@@ -73,7 +73,28 @@ pub(crate) fn chord<D: DualNum<Primitive = f64> + Copy, const N: usize>(
 /// decrease; [`Error::GapTooSmall`] for two values closer than `f64::MIN_POSITIVE`;
 /// [`Error::Overflow`] if the whole width overflows.
 pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
+    check_sites_gap(what, x).map(|_| ())
+}
+
+/// [`check_sites`], returning the largest gap `max (xᵢ₊₁ − xᵢ)` (0 below two values).
+pub(crate) fn check_sites_gap(what: &'static str, x: &[f64]) -> Result<f64> {
     crate::error::size(what, x.len())?;
+    // the common case in one branch-free pass: finite, and every gap at least MIN_POSITIVE
+    // (which implies strictly increasing); the loop below names the first failure
+    // (gaps ≥ MIN_POSITIVE and a finite total width leave no room for a NaN or an infinity:
+    // an infinite value inside makes its next gap NaN or −∞, one at an end the width infinite)
+    let (gaps_ok, widest) = x.windows(2).fold((true, 0.0_f64), |(ok, widest), w| {
+        let g = w[1] - w[0];
+        (ok & (g >= f64::MIN_POSITIVE), widest.max(g))
+    });
+    let width_ok = match x {
+        [] => true,
+        [only] => only.is_finite(),
+        [first, .., last] => (last - first).is_finite(),
+    };
+    if gaps_ok && width_ok {
+        return Ok(widest);
+    }
     let mut prev = f64::NEG_INFINITY;
     for (index, &v) in x.iter().enumerate() {
         finite(what, v)?;
@@ -101,7 +122,7 @@ pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
     if x.len() > 1 {
         crate::domain::gap(what, x.len() - 1, x[0], x[x.len() - 1])?;
     }
-    Ok(())
+    Ok(widest)
 }
 
 /// Finds the interval `[xᵢ, xᵢ₊₁)` of a sequence of points, starting at the previous one, so
