@@ -104,7 +104,7 @@ impl<const N: usize> BSplineCurve<N> {
     /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
     /// [`ParametricCurve::eval`]. The span search starts from the previous span, so sorted
     /// parameters cost a comparison or two each. For degree ≤ 3 each span's polynomial is
-    /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + ε`
+    /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + w ε`
     /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
     /// degrees evaluate the basis at every point.
     ///
