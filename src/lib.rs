@@ -23,6 +23,14 @@
 //! - [`report`]: tables (polars), figures (plotters), output files and benchmarks used by the
 //!   `splinelab` CLI and the notebooks.
 
+/// The linear-algebra crate of the points and vectors (`nalgebra`), re-exported so a notebook
+/// cell or a user crate needs no `:dep` line of its own and always gets the version splinelab
+/// is built with.
+pub use nalgebra;
+/// The dual-number crate (`num-dual`), re-exported for the same reason: a surface closure
+/// written over `num_dual::HyperDual64` uses the same types as the library.
+pub use num_dual;
+
 pub mod bezier;
 pub mod blending;
 pub mod bspline;
@@ -35,6 +43,7 @@ mod horner;
 pub mod interp;
 pub mod metrics;
 pub mod nurbs;
+pub mod prelude;
 pub mod report;
 pub mod study;
 pub mod surface;

@@ -1,0 +1,29 @@
+//! What a notebook cell or a first program needs in one `use`: the points and vectors
+//! (nalgebra), the dual numbers and their trait (num-dual), and the main splinelab types and
+//! traits. An explicit list, not a glob of the crate.
+//!
+//! # Examples
+//! ```
+//! use splinelab::prelude::*;
+//! // a user surface written once over hyper-dual numbers: exact X_st, no extra dependency
+//! let saddle = FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s, t, s * t.sin()));
+//! let d = saddle.partials(0.5, 0.25);
+//! assert!((d.dst.z - 0.25f64.cos()).abs() < 1e-15); // ∂²(s sin t)/∂s∂t = cos t
+//! let spline = HermiteSpline::try_from_surface(
+//!     &saddle,
+//!     Partition::uniform(0.0, 1.0, 4).unwrap(),
+//!     Partition::uniform(0.0, 1.0, 4).unwrap(),
+//! )
+//! .unwrap();
+//! assert!((spline.try_point(0.5, 0.25).unwrap() - saddle.point(0.5, 0.25)).norm() < 1e-15);
+//! ```
+
+pub use nalgebra::{DMatrix, Matrix4, SVector, Vector1, Vector2, Vector3};
+pub use num_dual::{Dual2_64, Dual3_64, Dual64, DualNum, HyperDual64};
+
+pub use crate::{
+    BSplineBasis, BSplineCurve, BezierPatch, CubicSpline, EndCondition, Error, FnSurface,
+    HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve,
+    ParametricSurface, Parametrization, Partition, PiecewiseLinear, Rect, Result,
+    SurfaceDerivatives, Torus,
+};
