@@ -62,8 +62,6 @@ pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     prec: usize,
     eval: PatchEvaluation,
 ) -> Result<CoordErrors> {
-    crate::error::size_product("patches n × m", u.len(), v.len())?;
-    crate::error::size_product("samples per patch prec × prec", prec, prec)?;
     let spline = HermiteSpline::try_from_surface(surface, u, v)?;
     let (n, m) = spline.patch_counts();
     let mut acc = ErrorAccumulator::new();

@@ -295,7 +295,7 @@ pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
 }
 
 /// Whether every component of a partials record is finite.
-fn partials_finite(p: &Partials) -> bool {
+pub(crate) fn partials_finite(p: &Partials) -> bool {
     [p.point, p.ds, p.dt, p.dst]
         .iter()
         .all(|v| v.iter().all(|x| x.is_finite()))

@@ -88,9 +88,9 @@ pub(crate) fn solve<const N: usize>(
     Ok(largest)
 }
 
-/// `‖x‖₁`, NaN-propagating.
+/// `‖x‖₁`, NaN-propagating (≥ `‖x‖_∞`, and unlike `amax` it keeps a NaN).
 #[inline]
-fn l1<const N: usize>(x: &SVector<f64, N>) -> f64 {
+pub(crate) fn l1<const N: usize>(x: &SVector<f64, N>) -> f64 {
     x.iter().fold(0.0, |a, c| a + c.abs())
 }
 

@@ -118,10 +118,7 @@ impl HermitePatch {
     ) -> Result<Self> {
         let corner = |u, v| -> Result<Partials> {
             let p = surface.partials(u, v);
-            if [p.point, p.ds, p.dt, p.dst]
-                .iter()
-                .all(|x| x.iter().all(|c| c.is_finite()))
-            {
+            if crate::surface::partials_finite(&p) {
                 Ok(p)
             } else {
                 Err(Error::NonFiniteSurface { s: u, t: v })

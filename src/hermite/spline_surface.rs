@@ -120,7 +120,6 @@ impl HermiteSpline {
     ) -> Result<Self> {
         let u = Partition::uniform(rect.s.start(), rect.s.end(), n)?;
         let v = Partition::uniform(rect.t.start(), rect.t.end(), m)?;
-        crate::error::size_product("Hermite spline nodes", u.nodes().len(), v.nodes().len())?;
         Self::try_from_surface(surface, u, v)
     }
 

@@ -157,8 +157,7 @@ impl<const N: usize> CubicSpline<N> {
     /// known from the build): where `2 · largest · widest² ≤ f64::MAX / 4` every bound is
     /// finite (the values are within `MAX_COORDINATE`) and no pass over the pieces is needed.
     fn verify(&self, widest: f64, largest: f64) -> Result<()> {
-        // ‖·‖₁ (≥ ‖·‖_∞) keeps a NaN, which amax would drop
-        let l1 = |v: &SVector<f64, N>| v.iter().fold(0.0, |a: f64, c| a + c.abs());
+        use crate::tridiagonal::l1;
         // NaN fails the comparison
         if 2.0 * largest * widest * widest <= f64::MAX / 4.0 {
             return Ok(());
