@@ -52,7 +52,10 @@ pub const MAX_COORDINATE: f64 = f64::MAX / 64.0;
 ///
 /// Construction and tabulation return `Result<_, Error>`; evaluation of an object that was
 /// validated on construction does not fail (see the [module docs](self) for the policy).
-#[derive(Debug, Clone, PartialEq, Error)]
+///
+/// `Debug` prints the same message as `Display`, so an `.expect(…)`, a `?` in a notebook cell
+/// or an `unwrap` shows what went wrong in words, not a dump of the variant's fields.
+#[derive(Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum Error {
     /// A parameter (bound, node, evaluation point) was NaN or infinite.
@@ -343,38 +346,12 @@ pub enum Error {
         /// The limit, [`MAX_COORDINATE`].
         max: f64,
     },
-    /// Reading or writing a file failed.
-    #[error("{path}: {message}")]
-    Io {
-        /// The file or folder.
-        path: std::path::PathBuf,
-        /// What the operating system said.
-        message: String,
-    },
-    /// An output or workload id that does not exist.
-    #[error("unknown {what} id `{id}` (see --list)")]
-    UnknownId {
-        /// Output or workload.
-        what: &'static str,
-        /// The id asked for.
-        id: String,
-    },
-    /// A figure could not be drawn.
-    #[error("figure {id}: {message}")]
-    Figure {
-        /// The figure id.
-        id: String,
-        /// What went wrong.
-        message: String,
-    },
-    /// A table could not be built (polars error, stringified).
-    #[error("table {id}: {message}")]
-    Table {
-        /// The table id.
-        id: String,
-        /// What polars said.
-        message: String,
-    },
+}
+
+impl std::fmt::Debug for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
 }
 
 /// Shorthand for `Result<T, splinelab::Error>`.

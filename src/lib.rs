@@ -20,8 +20,18 @@
 //!   B-spline collocation.
 //! - [`blending`]: seed 003's blending functions, the printed `bspline` and OpenGL-evaluator
 //!   procedures, the sliding bicubic surface.
-//! - [`report`]: tables (polars), figures (plotters), output files and benchmarks used by the
-//!   `splinelab` CLI and the notebooks.
+//! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
+//! - [`report`] (feature `report`, on by default): figures and tables of the user's own
+//!   objects ([`report::draw`], [`report::table`]), the seeds' outputs built with them, output
+//!   files and benchmarks used by the `splinelab` CLI and the notebooks.
+//!
+//! # Features
+//!
+//! - `report` (default): the report layer, with polars and plotters.
+//! - `cli` (default): the `splinelab` program (clap, anyhow); implies `report`.
+//!
+//! With `default-features = false` the crate is the mathematics alone: num-dual, nalgebra
+//! and thiserror.
 
 /// The linear-algebra crate of the points and vectors (`nalgebra`), re-exported so a notebook
 /// cell or a user crate needs no `:dep` line of its own and always gets the version splinelab
@@ -44,7 +54,9 @@ pub mod interp;
 pub mod metrics;
 pub mod nurbs;
 pub mod prelude;
+#[cfg(feature = "report")]
 pub mod report;
+pub mod seeds;
 pub mod study;
 pub mod surface;
 pub mod tensor;

@@ -3,6 +3,7 @@
 use anyhow::Context;
 use clap::{Parser, Subcommand};
 use splinelab::report::{bench, describe_outputs, write_all, write_only};
+
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;

@@ -27,3 +27,10 @@ pub use crate::{
     ParametricSurface, Parametrization, Partition, PiecewiseLinear, Rect, Result,
     SurfaceDerivatives, Torus,
 };
+
+#[cfg(feature = "report")]
+pub use crate::report::{
+    draw::{Plot2d, Plot3d},
+    render3d::View,
+    Figure, Table,
+};

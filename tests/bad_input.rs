@@ -59,8 +59,6 @@ use splinelab::interp::collocation::{
 use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition};
 use splinelab::interp::RESIDUAL_TOLERANCE;
 use splinelab::metrics::ErrorAccumulator;
-use splinelab::report::output::{write_figure, write_table};
-use splinelab::report::FigureId;
 use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
@@ -123,7 +121,7 @@ fn risky(name: &'static str, run: CaseFn) -> Case {
 }
 
 /// A result described without printing a (possibly huge) `Ok` value.
-fn show<T>(r: &Result<T, Error>) -> String {
+fn show<T, E: std::fmt::Debug + std::fmt::Display>(r: &Result<T, E>) -> String {
     match r {
         Ok(_) => format!("Ok(<{}>)", std::any::type_name::<T>()),
         Err(e) => format!("Err({e:?}) «{e}»"),
@@ -131,7 +129,7 @@ fn show<T>(r: &Result<T, Error>) -> String {
 }
 
 /// The value of an `Ok`, or the unexpected error as the case's failure.
-fn ok<T>(r: Result<T, Error>) -> Result<T, String> {
+fn ok<T, E: std::fmt::Debug + std::fmt::Display>(r: Result<T, E>) -> Result<T, String> {
     r.map_err(|e| format!("unexpected Err({e:?}) «{e}»"))
 }
 
@@ -283,6 +281,7 @@ fn check_parameters(t: &[f64]) -> CaseResult {
 }
 
 /// A path that is a plain file, so any folder below it cannot be created (also as root).
+#[cfg(feature = "report")]
 fn plain_file() -> Result<(tempfile::TempDir, PathBuf), String> {
     let dir = tempfile::tempdir().map_err(|e| format!("tempdir: {e}"))?;
     let file = dir.path().join("plain-file");
@@ -4397,33 +4396,39 @@ fn sweep_cases() -> Vec<Case> {
     ]
 }
 
+#[cfg(not(feature = "report"))]
 fn report_cases() -> Vec<Case> {
+    Vec::new()
+}
+
+#[cfg(feature = "report")]
+fn report_cases() -> Vec<Case> {
+    use splinelab::report::draw::{self, Plot2d, Plot3d};
+    use splinelab::report::{self, Error as RError};
     vec![
         case("report::write_only_unknown_id", || {
             let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
             expect_err!(
-                splinelab::report::write_only(dir.path(), "no-such-output"),
-                Error::UnknownId { id, .. } if id == "no-such-output"
+                report::write_only(dir.path(), "no-such-output"),
+                RError::UnknownId { id, .. } if id == "no-such-output"
             )?;
-            expect_err!(
-                splinelab::report::write_only(dir.path(), ""),
-                Error::UnknownId { .. }
-            )
+            expect_err!(report::write_only(dir.path(), ""), RError::UnknownId { .. })
         }),
-        case("report::write_table_unwritable_folder", || {
+        case("report::table_write_unwritable_folder", || {
             let (_dir, file) = plain_file()?;
-            let table = ok(splinelab::report::tables::torus_partials())?;
-            expect_err!(write_table(&table, &file), Error::Io { path, .. } if path.starts_with(&file))
+            let table = ok(report::table("torus-partials"))?;
+            expect_err!(table.write(&file), RError::Io { path, .. } if path.starts_with(&file))
         }),
-        case("report::write_figure_unwritable_folder", || {
+        case("report::figure_save_unwritable_folder", || {
             let (_dir, file) = plain_file()?;
-            expect_err!(write_figure(FigureId::Torus, &file), Error::Io { .. })
+            let fig = ok(report::figure("fig2-torus"))?;
+            expect_err!(fig.save(&file, "fig2-torus"), RError::Io { .. })
         }),
         case("report::write_only_unwritable_folder", || {
             let (_dir, file) = plain_file()?;
             expect_err!(
-                splinelab::report::write_only(&file, "torus-partials"),
-                Error::Io { .. }
+                report::write_only(&file, "torus-partials"),
+                RError::Io { .. }
             )
         }),
         case("report::write_only_folder_below_a_file", || {
@@ -4431,12 +4436,98 @@ fn report_cases() -> Vec<Case> {
             let (_dir, file) = plain_file()?;
             let deeper: &Path = &file.join("a").join("b");
             expect_err!(
-                splinelab::report::write_only(deeper, "torus-partials"),
-                Error::Io { .. }
+                report::write_only(deeper, "torus-partials"),
+                RError::Io { .. }
+            )
+        }),
+        case("report::figure_and_table_of_the_wrong_kind", || {
+            expect_err!(report::figure("t3-error"), RError::UnknownId { .. })?;
+            expect_err!(report::table("fig2-torus"), RError::UnknownId { .. })
+        }),
+        case("draw::surface_too_few_or_too_many_samples", || {
+            let f = FnSurface::new(|s, t| Vector3::new(s, t, s * t));
+            for n in [0, 1] {
+                expect_err!(
+                    Plot3d::new("x").surface(&f, &Rect::unit(), n),
+                    RError::Core(Error::TooFewSamples { .. })
+                )?;
+            }
+            expect_err!(
+                Plot3d::new("x").surface(&f, &Rect::unit(), 1 << 20),
+                RError::Core(Error::TooLarge { .. })
+            )
+        }),
+        case("draw::surface_nan_anywhere", || {
+            let f = FnSurface::new(|s, t| Vector3::new(s, t, (s - 0.5).ln()));
+            expect_err!(
+                Plot3d::new("x").surface(&f, &Rect::unit(), 11),
+                RError::Core(Error::NonFiniteSurface { .. })
+            )
+        }),
+        case("draw::error_map_bad_samples_and_nan_surface", || {
+            let f = FnSurface::new(|s, t| Vector3::new(s, t, s * t));
+            let spline = ok(HermiteSpline::uniform(&f, &Rect::unit(), 2, 2))?;
+            expect_err!(
+                draw::error_map(&f, &spline, 1),
+                RError::Core(Error::TooFewSamples { .. })
+            )?;
+            let g = FnSurface::new(|s, t| Vector3::new(s, t, (s - 0.3).sqrt()));
+            expect_err!(
+                draw::error_map(&g, &spline, 11),
+                RError::Core(Error::NonFiniteSurface { .. })
+            )
+        }),
+        case("draw::degenerate_data_draws_without_panic", || {
+            // empty, NaN, infinite and single-point series; empty studies and scenes
+            let nan = Plot2d::new("nan", "x", "y")
+                .series("empty", vec![])
+                .series(
+                    "nan",
+                    vec![(f64::NAN, 1.0), (f64::INFINITY, 2.0), (1.0, f64::NAN)],
+                )
+                .series("one", vec![(1.0, 1.0)])
+                .log(true, true)
+                .figure();
+            ok(nan.to_svg())?;
+            ok(draw::convergence(&[], "empty").to_svg())?;
+            ok(Plot3d::new("empty scene").figure().to_svg())?;
+            ok(Plot3d::new("one point")
+                .points(
+                    &[Vector3::new(f64::NAN, 0.0, 1.0), Vector3::zeros()],
+                    RGB_BLACK,
+                    "p",
+                )
+                .figure()
+                .to_svg())
+            .map(|_| ())
+        }),
+        case(
+            "figure::huge_size_is_clamped_and_drawn_within_memory",
+            || {
+                let fig = ok(report::figure("fig-bspline-bases"))?.with_size(u32::MAX, 0);
+                if fig.size != (splinelab::report::figure::MAX_SIDE, 64) {
+                    return Err(format!("size {:?}", fig.size));
+                }
+                ok(fig.to_rgb()).map(drop)
+            },
+        ),
+        case("table::tabulation_bad_samples", || {
+            let f = FnSurface::new(|s, t| Vector3::new(s, t, s * t));
+            expect_err!(
+                report::table::tabulation(&f, &Rect::unit(), 1, 5),
+                RError::Core(Error::TooFewSamples { .. })
+            )?;
+            expect_err!(
+                report::table::tabulation(&f, &Rect::unit(), 1 << 14, 1 << 14),
+                RError::Core(Error::TooLarge { .. })
             )
         }),
     ]
 }
+
+/// Black, for markers in the report cases.
+#[cfg(feature = "report")]
+const RGB_BLACK: plotters::style::RGBColor = plotters::style::RGBColor(0, 0, 0);
 
 // ---------------------------------------------------------------------------------------------
 // The tests

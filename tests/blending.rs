@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use splinelab::blending::opengl::{opengl_groups, opengl_polyline, LastGroup};
 use splinelab::blending::surface::SlidingBicubic;
 use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
-use splinelab::report::curve_data as data;
+use splinelab::seeds::seed003 as data;
 use splinelab::{
     bernstein_sum, de_casteljau, de_casteljau_levels, de_casteljau_recursive, lagrange4,
     printed_setbval, uniform_bspline4, BSplineBasis, BSplineCurve, Blending, Grid, KnotVector,

@@ -8,7 +8,7 @@ use common::{Rng, EXACT, FD, FD_STEP};
 use nalgebra::{Matrix2, Vector2, Vector3};
 use num_dual::Dual3_64;
 use proptest::prelude::*;
-use splinelab::report::curve_data as data;
+use splinelab::seeds::seed001 as data;
 use splinelab::{
     de_casteljau, BSplineBasis, BSplineCurve, EndKnots, KnotVector, NurbsCurve, ParametricCurve,
 };

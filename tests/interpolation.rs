@@ -8,7 +8,7 @@ use common::{Rng, EXACT};
 use nalgebra::{Matrix2, Vector1, Vector2};
 use proptest::prelude::*;
 use splinelab::interp::collocation::{self, interpolate_curve};
-use splinelab::report::curve_data as data;
+use splinelab::seeds::seed001 as data;
 use splinelab::{
     runge, CubicSpline, EndCondition, Lagrange, NodeFamily, ParametricCurve, Parametrization,
     PiecewiseLinear, PowerPolynomial,

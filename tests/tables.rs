@@ -3,8 +3,9 @@
 
 // Index loops over k ∈ {x, y, z} read printed, listing and our values side by side.
 #![allow(clippy::needless_range_loop)]
-use splinelab::report::printed::{agrees_to_printed, T3, T6};
-use splinelab::report::tables;
+#[cfg(feature = "report")]
+use splinelab::report::seed000::tables;
+use splinelab::seeds::seed000::{agrees_to_printed, T3, T6};
 use splinelab::study::REPORT_PREC;
 use splinelab::{convergence, uniform_spline_errors, PatchEvaluation, Rect, Torus};
 
@@ -119,6 +120,7 @@ fn max_abs_error_converges_with_order_four() {
     );
 }
 
+#[cfg(feature = "report")]
 #[test]
 fn tables_build_with_expected_shapes() {
     let t3 = tables::t3().expect("t3");
@@ -131,6 +133,7 @@ fn tables_build_with_expected_shapes() {
     assert_eq!(conv.df.height(), 21);
 }
 
+#[cfg(feature = "report")]
 #[test]
 fn torus_partials_table_shows_dual_equal_to_closed_form() {
     let t = tables::torus_partials().expect("partials table");
@@ -156,14 +159,15 @@ fn printed_precision_is_respected() {
     assert!(!agrees_to_printed("0.0717", f64::NAN));
 }
 
+#[cfg(feature = "report")]
 #[test]
 fn notebook_html_shows_every_row_and_escapes() {
     let t6 = tables::t6().expect("t6");
-    let html = splinelab::report::output::to_html(&t6).expect("html");
+    let html = t6.to_html().expect("html");
     assert_eq!(html.matches("<tr>").count(), 1 + 12, "header + 12 rows");
     assert!(!html.contains('…'), "no elided rows");
     let eq = tables::equivalence().expect("equivalence");
-    let html = splinelab::report::output::to_html(&eq).expect("html");
+    let html = eq.to_html().expect("html");
     assert!(
         html.contains("&lt;") || !eq.notes.iter().any(|n| n.contains('<')),
         "escaped"

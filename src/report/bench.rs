@@ -5,12 +5,13 @@ use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
 use crate::domain::{linspace, Partition, Rect};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::hermite::patch::HermitePatch;
 use crate::hermite::spline_surface::HermiteSpline;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::nurbs::NurbsCurve;
-use crate::report::printed::T6;
+use crate::report::error::Error;
+use crate::seeds::seed000::T6;
 use crate::study::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
 use crate::surface::{partials_on_grid, Torus};
 use nalgebra::{Vector2, Vector3};
@@ -264,7 +265,7 @@ pub const WORKLOADS: [Workload; 9] = [
 ///
 /// # Errors
 /// [`Error::UnknownId`] for an unknown id; errors of the workload.
-pub fn run(id: &str, budget: Duration) -> Result<BenchResult> {
+pub fn run(id: &str, budget: Duration) -> crate::report::Result<BenchResult> {
     let w = WORKLOADS
         .iter()
         .find(|w| w.id == id)

@@ -1,21 +1,184 @@
-//! The report layer: tables (polars DataFrames), figures (plotters), output files and
-//! benchmark workloads.
+//! The report layer (feature `report`): figures (plotters) and tables (polars) from data, the
+//! seeds' outputs as thin calls of them, output files and benchmark workloads.
+//!
+//! - [`draw`]: figures of the user's own objects — any surface on a domain (with patch
+//!   outlines, corner points, derivative arrows, control nets), curves in the plane and in
+//!   space with control polygons and tangents, bases, error maps and convergence plots for
+//!   any surface and partition, line and log plots of any series. Each returns a [`Figure`].
+//! - [`table`]: a [`Table`] (DataFrame, title, notes) from any tabulation, error study or
+//!   convergence study; Markdown, HTML and CSV for any DataFrame.
+//! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
+//!   formulas.
+//! - [`seed000`], [`seed001`], [`seed003`]: each seed's outputs with the seed's data, listed
+//!   once in its `OUTPUTS`; [`outputs`] is their concatenation, which the CLI writes.
 //!
 //! It depends on the mathematics; the mathematics never depends on it.
 
 pub mod bench;
-pub mod curve_data;
-pub mod curve_figures;
-pub mod curve_tables;
-pub mod figures;
+pub mod draw;
+pub mod error;
+pub mod figure;
+mod files;
+pub mod heatmap;
 pub mod notebook;
-pub mod output;
 pub mod plot2d;
-pub mod printed;
 pub mod render3d;
+pub mod seed000;
+pub mod seed001;
+pub mod seed003;
 pub mod style;
-pub mod tables;
+mod supersample;
+pub mod table;
 
-pub use figures::FigureId;
-pub use output::{describe_outputs, list_outputs, write_all, write_only, OutputSpec};
-pub use tables::Table;
+pub use error::{Error, Result};
+pub use figure::Figure;
+pub use table::Table;
+
+use std::path::{Path, PathBuf};
+
+/// How an output is computed.
+#[derive(Debug, Clone, Copy)]
+pub enum Build {
+    /// A table, written as CSV and Markdown under `tables/`.
+    Table(fn() -> Result<Table>),
+    /// A figure, written as PNG and SVG under `figures/`.
+    Figure(fn() -> Result<Figure>),
+}
+
+/// One output of the reports: an id (the file stem and `--only` argument), the seed it comes
+/// from, a one-line description and how to build it.
+#[derive(Debug, Clone, Copy)]
+pub struct Output {
+    /// Id used by `--only` and as the file stem.
+    pub id: &'static str,
+    /// One-line description for `--list`.
+    pub description: &'static str,
+    /// How it is computed.
+    pub build: Build,
+}
+
+impl Output {
+    /// A table output.
+    pub const fn table(
+        id: &'static str,
+        description: &'static str,
+        build: fn() -> Result<Table>,
+    ) -> Self {
+        Self {
+            id,
+            description,
+            build: Build::Table(build),
+        }
+    }
+
+    /// A figure output.
+    pub const fn figure(
+        id: &'static str,
+        description: &'static str,
+        build: fn() -> Result<Figure>,
+    ) -> Self {
+        Self {
+            id,
+            description,
+            build: Build::Figure(build),
+        }
+    }
+
+    /// Whether it is a figure.
+    pub fn is_figure(&self) -> bool {
+        matches!(self.build, Build::Figure(_))
+    }
+
+    /// Writes the output's files into `dir` (`tables/<id>.csv|md` or
+    /// `figures/<id>.png|svg`); returns their paths.
+    ///
+    /// # Errors
+    /// [`Error::Io`] if a file cannot be written; errors of the computation or drawing.
+    pub fn write(&self, dir: &Path) -> Result<Vec<PathBuf>> {
+        match self.build {
+            Build::Table(f) => {
+                let mut table = f()?;
+                table.id = self.id.to_string();
+                table.write(&dir.join("tables"))
+            }
+            Build::Figure(f) => f()?.save(&dir.join("figures"), self.id),
+        }
+    }
+}
+
+/// Every output, seed by seed, in generation order.
+pub fn outputs() -> impl Iterator<Item = &'static Output> {
+    seed000::OUTPUTS
+        .iter()
+        .chain(seed001::OUTPUTS)
+        .chain(seed003::OUTPUTS)
+}
+
+/// The output with this id.
+///
+/// # Errors
+/// [`Error::UnknownId`] if there is none.
+pub fn find(id: &str) -> Result<&'static Output> {
+    outputs()
+        .find(|o| o.id == id)
+        .ok_or_else(|| Error::UnknownId {
+            what: "output",
+            id: id.to_string(),
+        })
+}
+
+/// The figure with this id, computed (for a notebook cell: `report::figure("fig2-torus")?`).
+///
+/// # Errors
+/// [`Error::UnknownId`] if there is no figure with this id; errors of the computation.
+pub fn figure(id: &str) -> Result<Figure> {
+    match find(id)?.build {
+        Build::Figure(f) => f(),
+        Build::Table(_) => Err(Error::UnknownId {
+            what: "figure",
+            id: id.to_string(),
+        }),
+    }
+}
+
+/// The table with this id, computed.
+///
+/// # Errors
+/// [`Error::UnknownId`] if there is no table with this id; errors of the computation.
+pub fn table(id: &str) -> Result<Table> {
+    match find(id)?.build {
+        Build::Table(f) => f(),
+        Build::Figure(_) => Err(Error::UnknownId {
+            what: "table",
+            id: id.to_string(),
+        }),
+    }
+}
+
+/// Every output id with its one-line description, one per line (what `--list` prints).
+pub fn describe_outputs() -> String {
+    outputs()
+        .map(|o| format!("{:<24} {}", o.id, o.description))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Regenerates one output by id into `dir`.
+///
+/// # Errors
+/// [`Error::UnknownId`] for an unknown id; the errors of [`Output::write`].
+pub fn write_only(dir: &Path, id: &str) -> Result<Vec<PathBuf>> {
+    find(id)?.write(dir)
+}
+
+/// Regenerates every output into `dir`.
+///
+/// # Errors
+/// The first error of [`Output::write`].
+pub fn write_all(dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    for output in outputs() {
+        written.extend(output.write(dir)?);
+    }
+    Ok(written)
+}

@@ -1,52 +1,181 @@
-//! What the Jupyter notebooks (evcxr kernel) call: figures as inline SVG, tables shown as
-//! DataFrames with their notes, live timings. Cells stay one line; logic stays here.
+//! What a notebook cell displays beyond figures and tables: 4×4 matrices in the report's
+//! layout (rows ↔ s, columns ↔ t) with labels, partials with their names, any matrix with
+//! row and column labels. Each returns an [`Html`] value, which the evcxr kernel shows as a
+//! table and which prints as aligned text elsewhere.
+//!
+//! nalgebra's own `Debug` of a `Matrix4` prints its column-major storage, i.e. the transpose
+//! of the matrix as written in the report; these views never do.
 
-use crate::error::Result;
-use crate::report::figures::FigureId;
-use crate::report::style::FIGURE_SIZE;
-use crate::report::tables::Table;
-use plotters::prelude::{IntoDrawingArea, SVGBackend};
+use crate::bezier::patch::BezierPatch;
+use crate::hermite::patch::HermitePatch;
+use crate::surface::Partials;
+use nalgebra::{Matrix4, Vector3};
+use std::fmt::Write as _;
 
-/// An SVG picture that evcxr shows inline (its `evcxr_display` protocol).
+/// An HTML fragment for a notebook, with a plain-text twin for `Display`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Svg(pub String);
+pub struct Html {
+    /// The HTML.
+    pub html: String,
+    /// The same content as aligned text.
+    pub text: String,
+}
 
-impl Svg {
-    /// Prints the evcxr display block; called by the kernel for a cell's value.
+impl Html {
+    /// Shows the fragment in a notebook (the evcxr kernel calls this for a cell's value).
     pub fn evcxr_display(&self) {
         println!(
-            "EVCXR_BEGIN_CONTENT text/html\n<div>{}</div>\nEVCXR_END_CONTENT",
-            self.0
+            "EVCXR_BEGIN_CONTENT text/html\n{}\nEVCXR_END_CONTENT",
+            self.html
         );
     }
 }
 
-/// Draws `figure` into an SVG string: the same drawing the CLI writes to
-/// `out/figures/<id>.svg`.
-///
-/// # Errors
-/// As [`FigureId::render`].
-pub fn figure_svg(figure: FigureId) -> Result<Svg> {
-    let mut buffer = String::new();
-    {
-        let root = SVGBackend::with_string(&mut buffer, FIGURE_SIZE).into_drawing_area();
-        figure.render(&root)?;
-        root.present().map_err(|e| crate::Error::Figure {
-            id: figure.id().to_string(),
-            message: e.to_string(),
-        })?;
+impl std::fmt::Display for Html {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text)
     }
-    Ok(Svg(buffer))
 }
 
-impl Table {
-    /// Shows the title, every row of the DataFrame and the notes in a notebook (HTML; the
-    /// plain DataFrame is `table.df`). Falls back to polars' text display if a cell cannot
-    /// be read.
-    pub fn evcxr_display(&self) {
-        match crate::report::output::to_html(self) {
-            Ok(html) => println!("EVCXR_BEGIN_CONTENT text/html\n{html}\nEVCXR_END_CONTENT"),
-            Err(_) => println!("{}\n\n{}", self.title, self.df),
-        }
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// A number for reading: 6 significant digits, `0` for exact zero.
+fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 {
+        "0".into()
+    } else if !x.is_finite() {
+        x.to_string()
+    } else if (1e-4..1e5).contains(&a) {
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{x:.decimals$}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        s.to_string()
+    } else {
+        format!("{x:.5e}")
     }
+}
+
+/// Matrices with labelled rows and columns, side by side: `blocks[k] = (caption, rows)` where
+/// `rows[i][j]` is row `i`, column `j` exactly as written on paper.
+pub fn labelled_matrices(
+    title: &str,
+    row_labels: &[&str],
+    col_labels: &[&str],
+    blocks: &[(String, Vec<Vec<f64>>)],
+) -> Html {
+    let mut html = format!(
+        "<div><b>{}</b><div style=\"display:flex;gap:2em;flex-wrap:wrap\">",
+        escape(title)
+    );
+    let mut text = format!("{title}\n");
+    for (caption, rows) in blocks {
+        let _ = write!(
+            html,
+            "<table><caption>{}</caption><thead><tr><th></th>",
+            escape(caption)
+        );
+        for c in col_labels {
+            let _ = write!(html, "<th>{}</th>", escape(c));
+        }
+        html.push_str("</tr></thead><tbody>");
+        let cells: Vec<Vec<String>> = rows
+            .iter()
+            .map(|r| r.iter().map(|&x| num(x)).collect())
+            .collect();
+        let width = cells
+            .iter()
+            .flatten()
+            .map(|s| s.chars().count())
+            .chain(col_labels.iter().map(|c| c.chars().count()))
+            .max()
+            .unwrap_or(1);
+        let label_width = row_labels
+            .iter()
+            .map(|l| l.chars().count())
+            .max()
+            .unwrap_or(0);
+        let _ = writeln!(text, "\n{caption}");
+        let _ = write!(text, "{:label_width$}", "");
+        for c in col_labels {
+            let _ = write!(text, "  {c:>width$}");
+        }
+        text.push('\n');
+        for (i, row) in cells.iter().enumerate() {
+            let label = row_labels.get(i).copied().unwrap_or("");
+            let _ = write!(html, "<tr><th>{}</th>", escape(label));
+            let _ = write!(text, "{label:label_width$}");
+            for c in row {
+                let _ = write!(html, "<td style=\"text-align:right\">{c}</td>");
+                let _ = write!(text, "  {c:>width$}");
+            }
+            html.push_str("</tr>");
+            text.push('\n');
+        }
+        html.push_str("</tbody></table>");
+    }
+    html.push_str("</div></div>");
+    Html { html, text }
+}
+
+/// The three coordinate planes of a 4×4 net of points, row `i` ↔ s, column `j` ↔ t.
+fn planes_of(net: &[[Vector3<f64>; 4]; 4]) -> Vec<(String, Vec<Vec<f64>>)> {
+    ["x", "y", "z"]
+        .iter()
+        .enumerate()
+        .map(|(k, axis)| {
+            let rows = (0..4)
+                .map(|i| (0..4).map(|j| net[i][j][k]).collect())
+                .collect();
+            (format!("{axis} plane"), rows)
+        })
+        .collect()
+}
+
+/// The Hermite matrix `C` of a patch in the report's layout (seed 000 §1, Codice 4): rows
+/// `X(0,·), X_s(0,·), X_s(1,·), X(1,·)` ↔ s, columns `X(·,0), X_t(·,0), X_t(·,1), X(·,1)` ↔ t,
+/// one table per coordinate.
+pub fn hermite_matrix(patch: &HermitePatch) -> Html {
+    labelled_matrices(
+        "Hermite matrix C (rows ↔ s, columns ↔ t)",
+        &["s=0: X", "s=0: ∂s", "s=1: ∂s", "s=1: X"],
+        &["t=0: X", "t=0: ∂t", "t=1: ∂t", "t=1: X"],
+        &planes_of(patch.matrix()),
+    )
+}
+
+/// The Bézier control net `M` of a patch, `b_ij` with row `i` ↔ s, column `j` ↔ t.
+pub fn bezier_net(patch: &BezierPatch) -> Html {
+    labelled_matrices(
+        "Bézier control net M = A C Aᵀ (rows ↔ s, columns ↔ t)",
+        &["i=0", "i=1", "i=2", "i=3"],
+        &["j=0", "j=1", "j=2", "j=3"],
+        &planes_of(patch.net()),
+    )
+}
+
+/// A 4×4 matrix as written on paper (row `i`, column `j`), with labels.
+pub fn matrix4(title: &str, m: &Matrix4<f64>, row_labels: &[&str], col_labels: &[&str]) -> Html {
+    let rows = (0..4)
+        .map(|i| (0..4).map(|j| m[(i, j)]).collect())
+        .collect();
+    labelled_matrices(title, row_labels, col_labels, &[(String::new(), rows)])
+}
+
+/// A point's partials `X, X_s, X_t, X_st` as a table: one row per partial, columns x, y, z.
+pub fn partials(p: &Partials) -> Html {
+    let rows = [p.point, p.ds, p.dt, p.dst]
+        .iter()
+        .map(|v| v.iter().copied().collect())
+        .collect();
+    labelled_matrices(
+        "partials",
+        &["X", "X_s", "X_t", "X_st"],
+        &["x", "y", "z"],
+        &[(String::new(), rows)],
+    )
 }

@@ -1,8 +1,36 @@
 //! Plane figures made of panels of line and point series, drawn with plotters on any backend.
 
+use crate::curve::ParametricCurve;
+use crate::domain::linspace;
 use crate::report::style::{FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
+use nalgebra::Vector2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+
+/// Samples per curve in the plane figures.
+pub const SAMPLES: usize = 400;
+/// Grey of control polygons and reference shapes.
+pub const GREY: RGBColor = RGBColor(120, 120, 120);
+/// Black.
+pub const INK: RGBColor = RGBColor(0, 0, 0);
+
+/// Plane points as `(x, y)` pairs.
+pub fn xy(points: &[Vector2<f64>]) -> Vec<(f64, f64)> {
+    points.iter().map(|p| (p.x, p.y)).collect()
+}
+
+/// `f` sampled at [`SAMPLES`] points of `[a, b]`.
+pub fn sampled(a: f64, b: f64, f: impl Fn(f64) -> (f64, f64)) -> Vec<(f64, f64)> {
+    linspace(a, b, SAMPLES).into_iter().map(f).collect()
+}
+
+/// Any plane curve sampled at [`SAMPLES`] parameters over its domain.
+///
+/// # Errors
+/// As [`ParametricCurve::polyline`].
+pub fn trace<C: ParametricCurve<2> + ?Sized>(c: &C) -> crate::Result<Vec<(f64, f64)>> {
+    Ok(xy(&c.polyline(SAMPLES)?))
+}
 
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,6 +84,25 @@ impl Series {
         self
     }
 
+    /// A control polygon: a thin grey line with dots at its vertices.
+    pub fn polygon(label: impl Into<String>, points: &[Vector2<f64>]) -> Self {
+        Self::line(label, xy(points), GREY)
+            .width(1)
+            .styled(Style::LinePoints(4))
+    }
+
+    /// Any plane curve sampled over its domain, as a solid line.
+    ///
+    /// # Errors
+    /// As [`ParametricCurve::polyline`].
+    pub fn curve<C: ParametricCurve<2> + ?Sized>(
+        label: impl Into<String>,
+        curve: &C,
+        color: RGBColor,
+    ) -> crate::Result<Self> {
+        Ok(Self::line(label, trace(curve)?, color))
+    }
+
     /// The same series without a legend entry.
     pub fn unlabeled(mut self) -> Self {
         self.label = None;
@@ -82,6 +129,10 @@ pub struct Panel {
     pub y_range: Option<(f64, f64)>,
     /// Where the legend goes.
     pub legend: SeriesLabelPosition,
+    /// Logarithmic x axis (non-positive x are left out).
+    pub log_x: bool,
+    /// Logarithmic y axis (non-positive y are left out).
+    pub log_y: bool,
 }
 
 impl Panel {
@@ -96,7 +147,22 @@ impl Panel {
             x_range: None,
             y_range: None,
             legend: SeriesLabelPosition::UpperRight,
+            log_x: false,
+            log_y: false,
         }
+    }
+
+    /// With logarithmic axes (`x`, `y`: which).
+    pub fn log(mut self, x: bool, y: bool) -> Self {
+        self.log_x = x;
+        self.log_y = y;
+        self
+    }
+
+    /// With a fixed x range.
+    pub fn x_range(mut self, lo: f64, hi: f64) -> Self {
+        self.x_range = Some((lo, hi));
+        self
     }
 
     /// With equal axis scaling.
@@ -189,7 +255,13 @@ impl Figure2d {
     /// # Errors
     /// Whatever the backend reports.
     pub fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Drawn<DB> {
-        let body = area.titled(&self.title, (FONT, TITLE_SIZE))?;
+        // a long title shrinks to fit the width (about 0.55 em per character)
+        let width = area.dim_in_pixel().0 as f64;
+        let chars = self.title.chars().count().max(1) as f64;
+        let size = (TITLE_SIZE as f64)
+            .min(0.95 * width / (0.55 * chars))
+            .max(12.0);
+        let body = area.titled(&self.title, (FONT, size))?;
         let body = if self.legend.is_empty() {
             body
         } else {
@@ -306,7 +378,68 @@ fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     )
 }
 
+/// The panel with its log axes applied: points (and fixed ranges) as `log₁₀`, points with a
+/// non-positive log coordinate dropped.
+fn logged(panel: &Panel) -> Panel {
+    let f = |on: bool, v: f64| if on { v.log10() } else { v };
+    let mut p = panel.clone();
+    for s in &mut p.series {
+        s.points = s
+            .points
+            .iter()
+            .filter(|(x, y)| (!panel.log_x || *x > 0.0) && (!panel.log_y || *y > 0.0))
+            .map(|&(x, y)| (f(panel.log_x, x), f(panel.log_y, y)))
+            .collect();
+    }
+    p.x_range = panel
+        .x_range
+        .map(|(a, b)| (f(panel.log_x, a), f(panel.log_x, b)));
+    p.y_range = panel
+        .y_range
+        .map(|(a, b)| (f(panel.log_y, a), f(panel.log_y, b)));
+    p
+}
+
+/// A tick label: the value, or `10^v` on a log axis.
+fn axis_label(log: bool, v: f64) -> String {
+    if log {
+        power_label(v)
+    } else {
+        let a = v.abs();
+        if a != 0.0 && !(1e-3..1e5).contains(&a) {
+            format!("{v:.1e}")
+        } else {
+            let s = format!("{v:.4}");
+            let s = s.trim_end_matches('0').trim_end_matches('.');
+            if s == "-0" {
+                "0".into()
+            } else {
+                s.to_string()
+            }
+        }
+    }
+}
+
+/// A tick label of a log axis at `log₁₀ v = e`: plain decimals from 0.001 to 10⁴, powers
+/// of ten beyond.
+fn power_label(e: f64) -> String {
+    let v = 10f64.powf(e);
+    if (-3.0..=4.0).contains(&e) {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
 fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) -> Drawn<DB> {
+    let owned;
+    let panel = if panel.log_x || panel.log_y {
+        owned = logged(panel);
+        &owned
+    } else {
+        panel
+    };
     let ((mut x0, mut x1), (mut y0, mut y1)) = extent(panel);
     if panel.equal_aspect {
         // grow the shorter side so one data unit spans as many pixels in x as in y
@@ -334,6 +467,8 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .bold_line_style(RGBColor(215, 215, 215))
         .x_labels(7)
         .y_labels(7)
+        .x_label_formatter(&|v| axis_label(panel.log_x, *v))
+        .y_label_formatter(&|v| axis_label(panel.log_y, *v))
         .draw()?;
     let mut labelled = false;
     for s in &panel.series {

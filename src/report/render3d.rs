@@ -1,7 +1,10 @@
 //! A small 3-D scene renderer on plotters' `Cartesian3d`: shaded quads drawn back to front
-//! (painter's algorithm, since plotters has no depth buffer), segments and markers on top,
-//! equal axis scaling (MATLAB's `axis equal`).
+//! (painter's algorithm, since plotters has no depth buffer), segments, arrows and markers on
+//! top, equal axis scaling (MATLAB's `axis equal`), the projected scene scaled and centred to
+//! fill the canvas, and a colour bar when colour carries height.
 
+use crate::report::heatmap::{draw_color_bar, ColorScale};
+use crate::report::plot2d::Drawn;
 use crate::report::style::{FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
 use nalgebra::Vector3;
 use plotters::coord::Shift;
@@ -29,6 +32,29 @@ pub struct Segment {
     pub color: RGBColor,
     /// Stroke width in pixels.
     pub width: u32,
+    /// Whether to draw an arrowhead at `b` (derivative vectors).
+    pub arrow: bool,
+}
+
+impl Segment {
+    /// A plain segment from `a` to `b`.
+    pub fn line(a: Vector3<f64>, b: Vector3<f64>, color: RGBColor, width: u32) -> Self {
+        Self {
+            a,
+            b,
+            color,
+            width,
+            arrow: false,
+        }
+    }
+
+    /// An arrow from `a` to `b` (its head at `b`).
+    pub fn arrow(a: Vector3<f64>, b: Vector3<f64>, color: RGBColor, width: u32) -> Self {
+        Self {
+            arrow: true,
+            ..Self::line(a, b, color, width)
+        }
+    }
 }
 
 /// A round marker (corner points, control points).
@@ -55,6 +81,30 @@ pub struct Scene {
     pub markers: Vec<Marker>,
     /// Legend entries (label, colour), drawn in the top-left corner.
     pub legend: Vec<(String, RGBColor)>,
+    /// The height range `(z_min, z_max)` of surfaces coloured by height, shown as a colour
+    /// bar (set by [`Scene::add_surface`] without a colour).
+    pub height_bar: Option<(f64, f64)>,
+}
+
+/// A 3-D figure: title, scene and camera.
+#[derive(Debug, Clone)]
+pub struct Figure3d {
+    /// Title.
+    pub title: String,
+    /// What is drawn.
+    pub scene: Scene,
+    /// The camera.
+    pub view: View,
+}
+
+impl Figure3d {
+    /// Draws the figure into `area` (already filled with the background).
+    ///
+    /// # Errors
+    /// Whatever the backend reports.
+    pub fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        draw_scene(area, &self.title, &self.scene, self.view)
+    }
 }
 
 impl Scene {
@@ -72,6 +122,10 @@ impl Scene {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
                 (lo.min(p.z), hi.max(p.z))
             });
+        if color.is_none() && zmin <= zmax {
+            let bar = self.height_bar.get_or_insert((zmin, zmax));
+            *bar = (bar.0.min(zmin), bar.1.max(zmax));
+        }
         for i in 0..grid.rows().saturating_sub(1) {
             for j in 0..grid.cols().saturating_sub(1) {
                 let corners = [
@@ -117,7 +171,7 @@ pub struct View {
     pub yaw: f64,
     /// Tilt towards the viewer.
     pub pitch: f64,
-    /// Zoom factor.
+    /// Zoom relative to the fit that fills the plotting area (1: fill it).
     pub scale: f64,
 }
 
@@ -127,7 +181,7 @@ impl Default for View {
         Self {
             yaw: 0.65,
             pitch: 0.5,
-            scale: 0.9,
+            scale: 1.0,
         }
     }
 }
@@ -152,7 +206,14 @@ fn to_plot(p: &Vector3<f64>) -> (f64, f64, f64) {
     (p.y, p.z, p.x)
 }
 
+/// Width of the colour bar strip on the right of a height-coloured scene.
+const BAR_WIDTH: u32 = 150;
+
 /// Draws `scene` with `title` into `area` (any plotters backend).
+///
+/// The camera's `yaw` and `pitch` orient the scene; its projection is then scaled and
+/// centred so the scene and its axes box fill the plotting area (`view.scale` multiplies
+/// that fit, so 1 fills it exactly).
 ///
 /// # Errors
 /// Whatever the backend reports.
@@ -162,25 +223,82 @@ pub fn draw_scene<DB: DrawingBackend>(
     scene: &Scene,
     view: View,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let (area, bar) = match scene.height_bar {
+        Some(_) => {
+            let (a, b) = area.split_horizontally(area.dim_in_pixel().0.saturating_sub(BAR_WIDTH));
+            (a, Some(b))
+        }
+        None => (area.clone(), None),
+    };
     let (lo, hi) = scene.bounds();
-    let pad = (hi - lo).amax() * 0.04;
+    let (lo, hi) = if lo.iter().chain(hi.iter()).all(|v| v.is_finite()) {
+        (lo, hi)
+    } else {
+        (Vector3::zeros(), Vector3::repeat(1.0))
+    };
+    let pad = ((hi - lo).amax() * 0.04).max(1e-9);
     let (lo, hi) = (lo.add_scalar(-pad), hi.add_scalar(pad));
     let ext = hi - lo;
-    let mut chart = ChartBuilder::on(area)
+    let mut chart = ChartBuilder::on(&area)
         .caption(title, (FONT, TITLE_SIZE))
         .margin(20)
         .build_cartesian_3d(lo.y..hi.y, lo.z..hi.z, lo.x..hi.x)?;
-    chart.with_projection(|mut pb| {
-        pb.yaw = view.yaw;
-        pb.pitch = view.pitch;
-        pb.scale = view.scale;
-        pb.into_matrix()
-    });
     // axis equal: pixel extents proportional to data extents
     let (w, h) = area.dim_in_pixel();
     let base = (w.min(h) as f64) * 0.8 / ext.amax();
     let px = |e: f64| ((e * base).round() as i32).max(1);
-    chart.set_3d_pixel_range((px(ext.y), px(ext.z), px(ext.x)));
+    let size = (px(ext.y), px(ext.z), px(ext.x));
+    chart.set_3d_pixel_range(size);
+    chart.with_projection(|mut pb| {
+        pb.yaw = view.yaw;
+        pb.pitch = view.pitch;
+        pb.scale = 1.0;
+        pb.into_matrix()
+    });
+    // fit: project the box corners and every point once, then scale and centre
+    let (fit, centre) = {
+        let coord = chart.as_coord_spec();
+        let corners = (0..8).map(|k| {
+            Vector3::new(
+                if k & 1 == 0 { lo.x } else { hi.x },
+                if k & 2 == 0 { lo.y } else { hi.y },
+                if k & 4 == 0 { lo.z } else { hi.z },
+            )
+        });
+        let points = scene
+            .quads
+            .iter()
+            .flat_map(|q| q.corners)
+            .chain(scene.segments.iter().flat_map(|s| [s.a, s.b]))
+            .chain(scene.markers.iter().map(|m| m.at))
+            .chain(corners);
+        let (mut x0, mut x1, mut y0, mut y1) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
+        for p in points {
+            let (x, y) = coord.translate(&to_plot(&p));
+            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+        }
+        let (rx, ry) = chart.plotting_area().get_pixel_range();
+        // room for the tick labels plotters draws outside the box
+        let margin = 2 * TICK_SIZE as i32 + 16;
+        let avail_w = (rx.end - rx.start - 2 * margin).max(1) as f64;
+        let avail_h = (ry.end - ry.start - 2 * margin).max(1) as f64;
+        let fit = (avail_w / (x1 - x0).max(1) as f64).min(avail_h / (y1 - y0).max(1) as f64);
+        let screen = ((rx.start + rx.end) / 2, (ry.start + ry.end) / 2);
+        let mid = ((x0 + x1) / 2 - screen.0, (y0 + y1) / 2 - screen.1);
+        (fit * view.scale, (screen, mid))
+    };
+    let ((sx, sy), (mx, my)) = centre;
+    chart.with_projection(|mut pb| {
+        pb.yaw = view.yaw;
+        pb.pitch = view.pitch;
+        pb.scale = fit;
+        let after = (
+            sx - (mx as f64 * fit).round() as i32,
+            sy - (my as f64 * fit).round() as i32,
+        );
+        pb.set_pivot((size.0 / 2, size.1 / 2, size.2 / 2), after);
+        pb.into_matrix()
+    });
     chart
         .configure_axes()
         .light_grid_style(BLACK.mix(0.08))
@@ -199,7 +317,7 @@ pub fn draw_scene<DB: DrawingBackend>(
     // edge, its Y axis (our z) at the back-left corner. Positions in plotters' coordinates.
     let label = (FONT, LABEL_SIZE + 4).into_font().color(&BLACK);
     let mid = (lo + hi) / 2.0;
-    let off = ext.amax() * 0.3;
+    let off = ext.amax() * 0.16;
     let names = [
         ("y", (mid.y, lo.z, hi.x + off)),
         ("x", (hi.y + off, lo.z, mid.x)),
@@ -233,11 +351,22 @@ pub fn draw_scene<DB: DrawingBackend>(
             chart.draw_series(std::iter::once(PathElement::new(ring, edge)))?;
         }
     }
+    let (bx, by) = area.get_base_pixel();
     for s in &scene.segments {
         chart.draw_series(std::iter::once(PathElement::new(
             vec![to_plot(&s.a), to_plot(&s.b)],
             s.color.stroke_width(s.width),
         )))?;
+        if s.arrow {
+            let (a, b) = (
+                coord.translate(&to_plot(&s.a)),
+                coord.translate(&to_plot(&s.b)),
+            );
+            if let Some(head) = arrowhead(a, b, 6.0 + 2.5 * s.width as f64) {
+                let head: Vec<(i32, i32)> = head.iter().map(|&(x, y)| (x - bx, y - by)).collect();
+                area.draw(&Polygon::new(head, s.color.filled()))?;
+            }
+        }
     }
     chart.draw_series(
         scene
@@ -245,8 +374,36 @@ pub fn draw_scene<DB: DrawingBackend>(
             .iter()
             .map(|m| Circle::new(to_plot(&m.at), m.radius, m.color.filled())),
     )?;
-    draw_legend(area, &scene.legend)?;
+    draw_legend(&area, &scene.legend)?;
+    if let (Some(bar), Some((z0, z1))) = (bar, scene.height_bar) {
+        let range = if z1 > z0 {
+            (z0, z1)
+        } else {
+            (z0 - 0.5, z0 + 0.5)
+        };
+        draw_color_bar(&bar, "height z", range, ColorScale::Linear)?;
+    }
     Ok(())
+}
+
+/// The triangle of an arrowhead of length `len` pixels at `b`, pointing from `a` to `b`;
+/// `None` for a segment too short on screen to carry one.
+fn arrowhead(a: (i32, i32), b: (i32, i32), len: f64) -> Option<[(i32, i32); 3]> {
+    let (dx, dy) = ((b.0 - a.0) as f64, (b.1 - a.1) as f64);
+    let d = dx.hypot(dy);
+    if d < 2.0 * len / 3.0 {
+        return None;
+    }
+    let (ux, uy) = (dx / d, dy / d);
+    let (px, py) = (-uy, ux);
+    let base = (b.0 as f64 - ux * len, b.1 as f64 - uy * len);
+    let half = 0.45 * len;
+    let r = |x: f64, y: f64| (x.round() as i32, y.round() as i32);
+    Some([
+        b,
+        r(base.0 + px * half, base.1 + py * half),
+        r(base.0 - px * half, base.1 - py * half),
+    ])
 }
 
 /// A legend box in the top-left corner of `area`: a colour swatch and a label per entry.

@@ -65,7 +65,7 @@ pub const T6: [PrintedRow; 4] = [
 ///
 /// # Examples
 /// ```
-/// use splinelab::report::printed::agrees_to_printed;
+/// use splinelab::seeds::seed000::agrees_to_printed;
 /// assert!(agrees_to_printed("0.0717", 0.07174443));
 /// assert!(agrees_to_printed("3.7101e-04", 3.71014e-4));
 /// assert!(!agrees_to_printed("0.0113", 0.0043878));

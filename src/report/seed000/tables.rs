@@ -3,39 +3,14 @@
 use crate::bezier::codice7::report_codice7_net;
 use crate::bezier::patch::BezierPatch;
 use crate::domain::Rect;
-use crate::error::{Error, Result};
 use crate::hermite::patch::HermitePatch;
-use crate::report::printed::{agrees_to_printed, PrintedRow, T3, T6};
-use crate::study::{
-    convergence, uniform_spline_errors, ConvergenceOrders, PatchEvaluation, REPORT_PREC,
-};
+use crate::report::error::Result;
+use crate::report::table::{self, frame, Table, COORDS};
+use crate::seeds::seed000::{agrees_to_printed, PrintedRow, T3, T6};
+use crate::study::{convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC};
 use crate::surface::Torus;
-use crate::CoordErrors;
 use nalgebra::Vector3;
 use polars::prelude::{Column, DataFrame};
-
-/// A table ready to be shown or written: an id, a title, the data and notes for the reader.
-#[derive(Debug, Clone)]
-pub struct Table {
-    /// Output id (file stem).
-    pub id: &'static str,
-    /// One-line title.
-    pub title: String,
-    /// The data.
-    pub df: DataFrame,
-    /// What the columns mean and what follows from them.
-    pub notes: Vec<String>,
-}
-
-const COORDS: [&str; 3] = ["x", "y", "z"];
-
-/// A DataFrame from columns, polars errors as [`Error::Table`] naming the table.
-pub(crate) fn frame(id: &'static str, columns: Vec<Column>) -> Result<DataFrame> {
-    DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
-        id: id.to_string(),
-        message: e.to_string(),
-    })
-}
 
 /// What the comparison of the printed value with the two reproductions shows.
 fn verdict(listing_agrees: bool, ours_agrees: bool) -> &'static str {
@@ -115,11 +90,11 @@ fn error_notes() -> Vec<String> {
 /// T3: seed 000 §3, a single patch of the torus on `[0, 1]²` and `[0, 0.5]²`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn t3() -> Result<Table> {
     let id = "t3-error";
     Ok(Table {
-        id,
+        id: id.into(),
         title: "T3 — interpolation error of one Hermite patch of the torus (seed 000 §3)".into(),
         df: error_table(id, &T3)?,
         notes: error_notes(),
@@ -129,11 +104,11 @@ pub fn t3() -> Result<Table> {
 /// T6: seed 000 §6, `n × m` patches of the torus on `[0, 1]²`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn t6() -> Result<Table> {
     let id = "t6-spline-error";
     Ok(Table {
-        id,
+        id: id.into(),
         title: "T6 — interpolation error of the Hermite spline surface, n × m patches on [0,1]² (seed 000 §6)".into(),
         df: error_table(id, &T6)?,
         notes: error_notes(),
@@ -156,7 +131,7 @@ fn max_deviation(h: &HermitePatch, b: &BezierPatch) -> Result<f64> {
 /// net of Codice 7 as printed.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn equivalence() -> Result<Table> {
     let id = "t4-equivalence";
     let torus = Torus::default();
@@ -180,7 +155,7 @@ pub fn equivalence() -> Result<Table> {
         }
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Hermite ≡ Bézier (Codice 10) for the correct net and for Codice 7 as printed".into(),
         df: frame(
             id,
@@ -205,59 +180,23 @@ pub const CONVERGENCE_NS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];
 /// `n = 1, 2, 4, …, 64`, with observed orders between rows (expected: 4).
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn convergence_table() -> Result<Table> {
-    let id = "convergence";
     let rows = convergence(
         &Torus::default(),
         &Rect::unit(),
         &CONVERGENCE_NS,
         REPORT_PREC,
     )?;
-    let (mut n_col, mut h_col, mut coord) = (vec![], vec![], vec![]);
-    // value and order (None on the first row, which has no previous row) of each measure
-    type Measure = fn(&CoordErrors) -> Vector3<f64>;
-    type Order = fn(&ConvergenceOrders) -> [Option<f64>; 3];
-    let measures: [(&str, Measure, Order); 3] = [
-        ("max_abs", |e| e.max_abs, |o| o.max_abs),
-        ("rms", |e| e.rms, |o| o.rms),
-        ("report_norm", |e| e.report_norm, |o| o.report_norm),
-    ];
-    let mut values: [Vec<f64>; 3] = Default::default();
-    let mut orders: [Vec<Option<f64>>; 3] = Default::default();
-    for row in &rows {
-        for (k, axis) in COORDS.iter().enumerate() {
-            n_col.push(row.n as u32);
-            h_col.push(row.h);
-            coord.push(*axis);
-            for (q, (_, get, order)) in measures.iter().enumerate() {
-                values[q].push(get(&row.errors)[k]);
-                orders[q].push(row.order.as_ref().and_then(|o| order(o)[k]));
-            }
-        }
-    }
-    let mut columns = vec![
-        Column::new("n".into(), n_col),
-        Column::new("h".into(), h_col),
-        Column::new("coord".into(), coord),
-    ];
-    for (q, (name, _, _)) in measures.iter().enumerate() {
-        columns.push(Column::new((*name).into(), std::mem::take(&mut values[q])));
-        columns.push(Column::new(
-            format!("order_{name}").into(),
-            std::mem::take(&mut orders[q]),
-        ));
-    }
-    Ok(Table {
-        id,
-        title: "Convergence of the bicubic Hermite spline of the torus on [0,1]², n × n patches".into(),
-        df: frame(id, columns)?,
-        notes: vec![
-            format!("Each patch sampled on {p}×{p} points as in Codice 14; h = 1/n.", p = REPORT_PREC),
-            "order_*: log(e_prev/e)/log(h_prev/h) against the previous row; bicubic Hermite interpolation converges as h⁴.".into(),
-            "report_norm is the report's measure (mean over patches of per-patch matrix 2-norms).".into(),
-        ],
-    })
+    Ok(table::convergence(
+        "convergence",
+        "Convergence of the bicubic Hermite spline of the torus on [0,1]², n × n patches",
+        &rows,
+    )?
+    .note(format!(
+        "Each patch sampled on {p}×{p} points as in Codice 14; h = 1/n.",
+        p = REPORT_PREC
+    )))
 }
 
 /// The partials of the torus from hyper-dual numbers beside the closed forms MATLAB's `diff`
@@ -267,7 +206,7 @@ pub fn convergence_table() -> Result<Table> {
 /// `X_t = (−r sin t cos s, −r sin t sin s, r cos t)`, `X_st = (r sin t sin s, −r sin t cos s, 0)`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn torus_partials() -> Result<Table> {
     use crate::surface::SurfaceDerivatives;
     let id = "torus-partials";
@@ -302,7 +241,7 @@ pub fn torus_partials() -> Result<Table> {
         }
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Exact partials of the torus: hyper-dual numbers vs the closed forms of Codice 3".into(),
         df: frame(
             id,

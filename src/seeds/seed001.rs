@@ -1,6 +1,7 @@
-//! The worked examples of seeds 001 and 003 (knot vectors, points, parameters), shared by the
-//! figures, the tables, the tests and the notebooks. Knots and printed values come from the
-//! seeds; the control points are ours (the seeds' figures, which held theirs, are lost).
+//! The worked examples of seed 001, the lecture slides on splines (knot vectors, points,
+//! parameters), shared by the figures, the tables, the tests and the notebooks. Knots and
+//! printed values come from the slides; the control points are ours (the slides' figures,
+//! which held theirs, are lost).
 
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
@@ -203,41 +204,6 @@ pub fn end_conditions() -> [EndCondition<1>; 4] {
     ]
 }
 
-/// The four control points of the de Casteljau figure.
-pub const CASTELJAU_POINTS: [(f64, f64); 4] = [(0.0, 0.0), (1.0, 3.0), (4.0, 3.0), (5.0, 0.0)];
-/// The parameters of seed 003's de Casteljau figures.
-pub const CASTELJAU_U: [f64; 3] = [0.3, 0.5, 0.7];
-
-/// Control points for the four-way comparison of seed 003 (6 or 7 points; any other count
-/// repeats the pattern).
-pub fn four_way_points(count: usize) -> Vec<Vector2<f64>> {
-    const PATTERN: [(f64, f64); 7] = [
-        (0.0, 0.0),
-        (1.0, 2.5),
-        (3.0, 3.2),
-        (4.0, 0.6),
-        (6.0, 0.2),
-        (7.0, 2.8),
-        (9.0, 2.2),
-    ];
-    (0..count)
-        .map(|i| {
-            let (x, y) = PATTERN[i % PATTERN.len()];
-            Vector2::new(x + 9.0 * (i / PATTERN.len()) as f64, y)
-        })
-        .collect()
-}
-
 fn to_points(p: &[(f64, f64)]) -> Vec<Vector2<f64>> {
     p.iter().map(|&(x, y)| Vector2::new(x, y)).collect()
-}
-
-/// The 7×7 grid of seed 003's bicubic surface: `x = i`, `y = j`, `z = f(x, y)` with
-/// `f = 1.2 sin(0.9 x) cos(0.7 y)` (the notes' grid `x[i] = x0 + i dx`, `y[j] = y0 + j dy`,
-/// `z = f(x, y)`, with an `f` of ours).
-pub fn sliding_grid() -> crate::grid::Grid<nalgebra::Vector3<f64>> {
-    crate::grid::Grid::from_fn(7, 7, |i, j| {
-        let (x, y) = (i as f64, j as f64);
-        nalgebra::Vector3::new(x, y, 1.2 * (0.9 * x).sin() * (0.7 * y).cos())
-    })
 }

@@ -1,57 +1,29 @@
-//! Figures of the lecture seeds 001 (B-splines, NURBS, interpolation) and 003 (de Casteljau,
-//! blending functions, OpenGL evaluators), as panels of plane curves.
+//! Figures of seed 001, the lecture slides on splines (B-splines, NURBS, interpolation), as
+//! panels of plane curves.
 
-use crate::bezier::bernstein::bernstein_sum;
-use crate::bezier::de_casteljau::{de_casteljau_levels, de_casteljau_recursive};
-use crate::blending::functions::{lagrange4, uniform_bspline4};
-use crate::blending::opengl::{opengl_polyline, LastGroup};
-use crate::blending::window::WindowCurve;
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
 use crate::curve::ParametricCurve;
 use crate::domain::linspace;
-use crate::error::Result;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::linear::PiecewiseLinear;
 use crate::interp::param::Parametrization;
 use crate::interp::polynomial::{runge, Lagrange, NodeFamily, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
-use crate::report::curve_data as data;
-use crate::report::plot2d::{Figure2d, Panel, Series, Style};
+use crate::report::error::Result;
+use crate::report::figure::Figure;
+use crate::report::plot2d::{
+    sampled, trace, xy, Figure2d, Panel, Series, Style, GREY, INK as BLACK, SAMPLES,
+};
 use crate::report::style::LINE_PALETTE as C;
+use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
-use plotters::prelude::{RGBColor, SeriesLabelPosition};
-
-/// Samples per curve in the figures.
-const SAMPLES: usize = 400;
-const GREY: RGBColor = RGBColor(120, 120, 120);
-const BLACK: RGBColor = RGBColor(0, 0, 0);
-
-fn xy(points: &[Vector2<f64>]) -> Vec<(f64, f64)> {
-    points.iter().map(|p| (p.x, p.y)).collect()
-}
-
-/// A control polygon: grey line with dots.
-fn polygon(label: &str, points: &[Vector2<f64>]) -> Series {
-    Series::line(label, xy(points), GREY)
-        .width(1)
-        .styled(Style::LinePoints(4))
-}
-
-/// `f` sampled at `SAMPLES` points of `[a, b]`.
-fn sampled(a: f64, b: f64, f: impl Fn(f64) -> (f64, f64)) -> Vec<(f64, f64)> {
-    linspace(a, b, SAMPLES).into_iter().map(f).collect()
-}
-
-/// Any plane curve sampled at `SAMPLES` parameters over its domain.
-fn trace<C: ParametricCurve<2>>(c: &C) -> Result<Vec<(f64, f64)>> {
-    Ok(xy(&c.polyline(SAMPLES)?))
-}
+use plotters::prelude::SeriesLabelPosition;
 
 /// Seed 001: the B-spline bases of degree 1 on `(0,0,1,2,3,4,5,5)` and degree 2 on
 /// `(0,0,0,1,2,3,4,4,4)`.
-pub fn bspline_bases() -> Result<Figure2d> {
+pub fn bspline_bases() -> Result<Figure> {
     let mut panels = Vec::new();
     for (degree, knots) in [(1, data::BASIS_N1.to_vec()), (2, data::BASIS_N2.to_vec())] {
         let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, degree)?;
@@ -75,16 +47,16 @@ pub fn bspline_bases() -> Result<Figure2d> {
         }
         panels.push(panel);
     }
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "B-spline bases (seed 001), Cox–de Boor, right end included",
         panels,
         (2, 1),
-    ))
+    )))
 }
 
 /// Seed 001: moving `P₄` of the cubic on `{0,0,0,0,¼,½,¾,1,1,1,1}` changes the curve only
 /// on `[¼, 1)`.
-pub fn bspline_locality() -> Result<Figure2d> {
+pub fn bspline_locality() -> Result<Figure> {
     let curve = data::locality_curve()?;
     let moved = curve.with_point(data::LOCALITY_INDEX, data::locality_moved_point())?;
     let ts = linspace(0.0, 1.0, SAMPLES);
@@ -95,7 +67,7 @@ pub fn bspline_locality() -> Result<Figure2d> {
     let top = Panel::new("curves and control polygons", "x", "y")
         .equal()
         .legend_at(SeriesLabelPosition::UpperLeft)
-        .with(polygon("control polygon", curve.points()))
+        .with(Series::polygon("control polygon", curve.points()))
         .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
         .with(
             Series::line("after moving P₄", trace(&moved)?, C[1])
@@ -128,32 +100,32 @@ pub fn bspline_locality() -> Result<Figure2d> {
         )
         .styled(Style::Dashed),
     );
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "Locality: cubic B-spline, knots {0,0,0,0,¼,½,¾,1,1,1,1}, P₄ moved",
         vec![top, bottom],
         (2, 1),
-    ))
+    )))
 }
 
 /// Seed 001: the quadratic spline curve on `{0,0,0,1/8,…,7/8,1,1,1}`.
-pub fn bspline_quadratic() -> Result<Figure2d> {
+pub fn bspline_quadratic() -> Result<Figure> {
     let curve = data::quadratic_example()?;
     let knots: Vec<Vector2<f64>> = (0..=8).map(|k| curve.point(k as f64 / 8.0)).collect();
     let panel = Panel::new("10 control points, order m = 3", "x", "y")
         .equal()
         .legend_at(SeriesLabelPosition::LowerRight)
-        .with(polygon("control polygon", curve.points()))
+        .with(Series::polygon("control polygon", curve.points()))
         .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
         .with(Series::line("C(k/8): segment joints", xy(&knots), C[1]).styled(Style::Points(5)));
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "Quadratic B-spline curve, knots {0,0,0,1/8,…,7/8,1,1,1} (seed 001)",
         vec![panel],
         (1, 1),
-    ))
+    )))
 }
 
 /// Seed 001: the exact circles from 7 and 9 weighted control points.
-pub fn nurbs_circles() -> Result<Figure2d> {
+pub fn nurbs_circles() -> Result<Figure> {
     let mut panels = Vec::new();
     for (name, circle) in [
         (
@@ -170,7 +142,7 @@ pub fn nurbs_circles() -> Result<Figure2d> {
             Panel::new(name, "x", "y")
                 .equal()
                 .legend_at(SeriesLabelPosition::LowerRight)
-                .with(polygon("control polygon", circle.points()))
+                .with(Series::polygon("control polygon", circle.points()))
                 .with(
                     Series::line("same points, all weights 1", trace(&unit)?, C[1])
                         .styled(Style::Dashed),
@@ -178,16 +150,18 @@ pub fn nurbs_circles() -> Result<Figure2d> {
                 .with(Series::line("NURBS", trace(&circle)?, C[0]).width(3)),
         );
     }
-    Ok(Figure2d::new(
-        "The exact circle as a quadratic NURBS (seed 001)",
-        panels,
-        (1, 2),
-    )
-    .shared_legend())
+    Ok(Figure::from(
+        Figure2d::new(
+            "The exact circle as a quadratic NURBS (seed 001)",
+            panels,
+            (1, 2),
+        )
+        .shared_legend(),
+    ))
 }
 
 /// Seed 001: one weight as a shape parameter.
-pub fn nurbs_weights() -> Result<Figure2d> {
+pub fn nurbs_weights() -> Result<Figure> {
     let base = data::weight_example()?;
     let mut panel = Panel::new(
         format!("weight w of P{} varied, all others 1", data::WEIGHT_INDEX),
@@ -196,21 +170,21 @@ pub fn nurbs_weights() -> Result<Figure2d> {
     )
     .equal()
     .legend_at(SeriesLabelPosition::LowerRight)
-    .with(polygon("control polygon", base.points()));
+    .with(Series::polygon("control polygon", base.points()));
     for (k, &w) in data::WEIGHTS.iter().enumerate() {
         let c = base.with_weight(data::WEIGHT_INDEX, w)?;
         panel = panel.with(Series::line(format!("w = {w}"), trace(&c)?, C[k % C.len()]));
     }
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "NURBS: a weight pulls the curve towards its control point (seed 001)",
         vec![panel],
         (1, 1),
-    ))
+    )))
 }
 
 /// Seed 001: Runge's phenomenon, degree 9, equispaced vs Chebyshev nodes, and the error vs
 /// degree.
-pub fn runge_figure() -> Result<Figure2d> {
+pub fn runge_figure() -> Result<Figure> {
     let (a, b) = RUNGE_INTERVAL;
     let degree = data::RUNGE_DEGREE;
     let mut top = Panel::new(
@@ -260,15 +234,15 @@ pub fn runge_figure() -> Result<Figure2d> {
                 .styled(Style::LinePoints(4)),
         );
     }
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "Runge's phenomenon, f(x) = 1/(1+x²) on [−5, 5] (seed 001)",
         vec![top, bottom],
         (2, 1),
-    ))
+    )))
 }
 
 /// Seed 001: uniform, chord-length and centripetal parameters for one data set.
-pub fn parametrizations() -> Result<Figure2d> {
+pub fn parametrizations() -> Result<Figure> {
     let points = data::PARAM_POINTS.map(|(x, y)| Vector2::new(x, y));
     let mut panel = Panel::new(
         "natural cubic spline curves through the same points",
@@ -282,15 +256,15 @@ pub fn parametrizations() -> Result<Figure2d> {
         let s = CubicSpline::curve(&points, param, EndCondition::Natural)?;
         panel = panel.with(Series::line(param.label(), trace(&s)?, C[k]).width(3));
     }
-    Ok(Figure2d::new(
+    Ok(Figure::from(Figure2d::new(
         "Parametrization of interpolation points (seed 001)",
         vec![panel],
         (1, 1),
-    ))
+    )))
 }
 
 /// Seeds 001 and 004: the four end conditions of the cubic spline on samples of `sin`.
-pub fn cubic_spline_ends() -> Result<Figure2d> {
+pub fn cubic_spline_ends() -> Result<Figure> {
     let (x, y) = data::spline_ends_data();
     let (a, b) = (x[0], x[x.len() - 1]);
     let mut top = Panel::new("7 samples of sin x on [0, 2π]", "x", "s(x)")
@@ -339,160 +313,12 @@ pub fn cubic_spline_ends() -> Result<Figure2d> {
         .styled(Style::Points(5))
         .unlabeled(),
     );
-    Ok(Figure2d::new(
-        "Cubic spline end conditions: clamped, natural, periodic, anticyclic",
-        vec![top, bottom],
-        (2, 1),
-    )
-    .shared_legend())
-}
-
-/// Seed 003: de Casteljau's construction at `u = 0.3, 0.5, 0.7`.
-pub fn de_casteljau_figure() -> Result<Figure2d> {
-    let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
-    let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
-        .into_iter()
-        .map(|u| de_casteljau_recursive(&points, u))
-        .collect::<Result<_>>()?;
-    let curve = xy(&curve);
-    let mut panels = Vec::new();
-    for &u in &data::CASTELJAU_U {
-        let levels = de_casteljau_levels(&points, u)?;
-        let mut panel = Panel::new(format!("u = {u}"), "x", "y")
-            .equal()
-            .legend_at(SeriesLabelPosition::LowerMiddle)
-            .with(polygon("control points", &points))
-            .with(Series::line("Bézier curve", curve.clone(), C[0]).width(3));
-        for (level, pts) in levels.iter().enumerate().skip(1) {
-            let style = if pts.len() == 1 {
-                Style::Points(7)
-            } else {
-                Style::LinePoints(4)
-            };
-            let label = if pts.len() == 1 {
-                format!("P(u), level {level}")
-            } else {
-                format!("level {level}")
-            };
-            panel = panel.with(Series::line(label, xy(pts), C[level % C.len()]).styled(style));
-        }
-        panels.push(panel);
-    }
-    Ok(Figure2d::new(
-        "de Casteljau: repeated linear interpolation (seed 003)",
-        panels,
-        (1, 3),
-    )
-    .shared_legend())
-}
-
-/// Seed 003: the Lagrange and uniform cubic B-spline blending functions.
-pub fn blending_functions() -> Result<Figure2d> {
-    let mut lag = Panel::new("Lagrange, nodes u = −1, 0, 1, 2", "u", "B_i(u)")
-        .legend_at(SeriesLabelPosition::UpperMiddle);
-    let mut bsp = Panel::new("uniform cubic B-spline, u ∈ [0, 1]", "u", "b_i(u)")
-        .legend_at(SeriesLabelPosition::UpperMiddle)
-        .y_range(-0.05, 0.8);
-    for (i, &color) in C.iter().take(4).enumerate() {
-        lag = lag.with(Series::line(
-            format!("B{}", i + 1),
-            sampled(-1.0, 2.0, |u| (u, lagrange4(u)[i])),
-            color,
-        ));
-        bsp = bsp.with(Series::line(
-            format!("b{i}"),
-            sampled(0.0, 1.0, |u| (u, uniform_bspline4(u)[i])),
-            color,
-        ));
-    }
-    Ok(Figure2d::new(
-        "Cubic blending functions (seed 003)",
-        vec![lag, bsp],
-        (1, 2),
+    Ok(Figure::from(
+        Figure2d::new(
+            "Cubic spline end conditions: clamped, natural, periodic, anticyclic",
+            vec![top, bottom],
+            (2, 1),
+        )
+        .shared_legend(),
     ))
-}
-
-/// Seed 003: the sliding Lagrange window (interpolating) vs the printed `bspline` procedure
-/// (approximating) on the same points.
-pub fn blending_curves() -> Result<Figure2d> {
-    let points = data::four_way_points(7);
-    let lagrange = trace(&WindowCurve::lagrange(&points)?)?;
-    let bspline = trace(&WindowCurve::printed_bspline(&points)?)?;
-    let panel = Panel::new("7 data points", "x", "y")
-        .equal()
-        .legend_at(SeriesLabelPosition::LowerRight)
-        .with(polygon("data / control points", &points))
-        .with(Series::line("Lagrange 4-point window (interpolates)", lagrange, C[0]).width(3))
-        .with(Series::line("bspline procedure (approximates)", bspline, C[1]).width(3));
-    Ok(Figure2d::new(
-        "Sliding 4-point windows: Lagrange vs uniform cubic B-spline (seed 003)",
-        vec![panel],
-        (1, 1),
-    ))
-}
-
-/// Seed 003: the four-way comparison for 6 and 7 control points.
-pub fn four_way() -> Result<Figure2d> {
-    let mut panels = Vec::new();
-    for count in [6, 7] {
-        let points = data::four_way_points(count);
-        let cubic = trace(&WindowCurve::printed_bspline(&points)?)?;
-        let opengl = opengl_polyline(&points, 5, 60, LastGroup::Truncated)?;
-        let casteljau: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
-            .into_iter()
-            .map(|u| de_casteljau_recursive(&points, u))
-            .collect::<Result<_>>()?;
-        let bezier: Vec<Vector2<f64>> = linspace(0.0, 1.0, 60)
-            .into_iter()
-            .filter_map(|u| bernstein_sum(&points, u).ok())
-            .collect();
-        panels.push(
-            Panel::new(format!("{count} control points"), "x", "y")
-                .equal()
-                .legend_at(SeriesLabelPosition::LowerRight)
-                .with(polygon("control points", &points))
-                .with(Series::line("cubic spline (bspline procedure)", cubic, C[0]).width(3))
-                .with(Series::line("OpenGL spline (order 5)", xy(&opengl), C[1]).width(3))
-                .with(Series::line("Casteljau", xy(&casteljau), C[2]).width(5))
-                .with(
-                    Series::line("Bézier (Bernstein sum, same curve)", xy(&bezier), BLACK)
-                        .styled(Style::Points(3)),
-                ),
-        );
-    }
-    Ok(Figure2d::new(
-        "Four curves from the same control points (seed 003)",
-        panels,
-        (2, 1),
-    )
-    .shared_legend())
-}
-
-/// Seed 003: the OpenGL-evaluator spline, intended vs as printed (stale control points in the
-/// last group).
-pub fn opengl_last_group() -> Result<Figure2d> {
-    let points = data::four_way_points(7);
-    let mut panels = Vec::new();
-    for (title, last) in [
-        ("last group truncated (intended)", LastGroup::Truncated),
-        (
-            "as printed: last group padded with stale points",
-            LastGroup::AsPrinted,
-        ),
-    ] {
-        let line = opengl_polyline(&points, 5, 60, last)?;
-        panels.push(
-            Panel::new(title, "x", "y")
-                .equal()
-                .legend_at(SeriesLabelPosition::LowerRight)
-                .with(polygon("control points", &points))
-                .with(Series::line("glMap1f order 5, step 4", xy(&line), C[1]).width(3)),
-        );
-    }
-    Ok(Figure2d::new(
-        "OpenGL evaluator spline on 7 points: groups P0–P4, then P4–P6",
-        panels,
-        (2, 1),
-    )
-    .shared_legend())
 }

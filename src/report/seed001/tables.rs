@@ -1,30 +1,25 @@
-//! Tables of the lecture seeds 001 and 003 as polars DataFrames, computed from scratch.
+//! Tables of seed 001, the lecture slides on splines, as polars DataFrames computed from scratch.
 
-use crate::bezier::bernstein::bernstein_sum;
-use crate::bezier::de_casteljau::{de_casteljau, de_casteljau_recursive};
-use crate::blending::functions::{lagrange4, printed_setbval, uniform_bspline4};
-use crate::blending::opengl::{opengl_groups, LastGroup};
-use crate::blending::window::printed_bspline_polyline;
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::{EndKnots, KnotVector};
 use crate::curve::{signed_curvature, ParametricCurve};
 use crate::domain::linspace;
-use crate::error::Result;
 use crate::interp::collocation;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
-use crate::report::curve_data as data;
-use crate::report::printed::agrees_to_printed;
-use crate::report::tables::{frame, Table};
+use crate::report::error::Result;
+use crate::report::table::{frame, Table};
+use crate::seeds::seed000::agrees_to_printed;
+use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
 use polars::prelude::Column;
 
 /// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn knot_vectors() -> Result<Table> {
     let id = "knot-vectors";
     let extended = KnotVector::extended_partition(
@@ -92,7 +87,7 @@ pub fn knot_vectors() -> Result<Table> {
         count.push(BSplineBasis::try_new(knots, p)?.len() as u32);
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Knot vectors of seed 001: printed vs constructed, and their properties".into(),
         df: frame(
             id,
@@ -119,7 +114,7 @@ pub fn knot_vectors() -> Result<Table> {
 /// evaluator.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn partition_of_unity() -> Result<Table> {
     let id = "partition-of-unity";
     let basis = BSplineBasis::try_new(
@@ -143,7 +138,7 @@ pub fn partition_of_unity() -> Result<Table> {
     one_pass.push(fast.iter().sum());
     ok.push(agrees_to_printed("1.0", fast.iter().sum()));
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Partition of unity: degree 2, knots (0,0,0,1,2,2,2), t = 0.6 (seed 001)".into(),
         df: frame(
             id,
@@ -168,7 +163,7 @@ pub const CIRCLE_SAMPLES: usize = 10_001;
 /// unit weights (a B-spline, not a circle).
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn nurbs_circle() -> Result<Table> {
     let id = "nurbs-circle";
     let center = Vector2::new(0.5, -0.25);
@@ -211,7 +206,7 @@ pub fn nurbs_circle() -> Result<Table> {
         );
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "The exact circle as a NURBS: radius error over 10 001 parameters (seed 001)"
             .into(),
         df: frame(
@@ -237,7 +232,7 @@ pub fn nurbs_circle() -> Result<Table> {
 /// nodes, and what the Vandermonde route loses.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn runge_errors() -> Result<Table> {
     let id = "runge-errors";
     let rows = data::runge_rows()?;
@@ -257,11 +252,11 @@ pub fn runge_errors() -> Result<Table> {
                     .fold(0.0, f64::max),
             ),
             Err(crate::Error::IllConditioned { .. } | crate::Error::SingularSystem { .. }) => None,
-            Err(e) => return Err(e),
+            Err(e) => return Err(e.into()),
         });
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Runge's phenomenon: max |p − f| on [−5, 5] vs degree (seed 001)".into(),
         df: frame(
             id,
@@ -299,7 +294,7 @@ pub fn runge_errors() -> Result<Table> {
 /// and the agreement of the tridiagonal route with the B-spline collocation route.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
+/// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn cubic_spline_ends() -> Result<Table> {
     let id = "cubic-spline-ends";
     let (x, y) = data::spline_ends_data();
@@ -338,7 +333,7 @@ pub fn cubic_spline_ends() -> Result<Table> {
         );
     }
     Ok(Table {
-        id,
+        id: id.into(),
         title: "Cubic spline end conditions on 7 samples of sin x, [0, 2π] (seeds 001, 004)"
             .into(),
         df: frame(
@@ -357,167 +352,6 @@ pub fn cubic_spline_ends() -> Result<Table> {
             "tridiagonal_vs_collocation: max difference over 1001 points between the O(n) moment solve and the B-spline collocation system (knots at the data, two condition rows) — two independent formulations.".into(),
             "Natural and periodic ends give the same spline here: the samples are periodic and sin″ = 0 at both ends, so the natural spline already meets the periodic conditions and, the solution being unique, is the periodic one.".into(),
             "Anticyclic ends contradict sin on [0, 2π] (whose end slopes are equal), hence its larger error; they suit data such as half a period of a sinusoid (a test checks that case).".into(),
-        ],
-    })
-}
-
-/// Seed 003's de Casteljau examples (`u = 0.3, 0.5, 0.7`): recursive as printed vs iterative
-/// vs Bernstein sum.
-///
-/// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
-pub fn de_casteljau_table() -> Result<Table> {
-    let id = "de-casteljau";
-    let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
-    let (mut us, mut xs, mut ys, mut d_iter, mut d_bern) = (vec![], vec![], vec![], vec![], vec![]);
-    for &u in &data::CASTELJAU_U {
-        let rec = de_casteljau_recursive(&points, u)?;
-        let it = de_casteljau(&points, u)?;
-        let bern = bernstein_sum(&points, u)?;
-        us.push(u);
-        xs.push(rec.x);
-        ys.push(rec.y);
-        d_iter.push((rec - it).amax());
-        d_bern.push((rec - bern).amax());
-    }
-    Ok(Table {
-        id,
-        title: "de Casteljau on 4 control points at u = 0.3, 0.5, 0.7 (seed 003)".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("u".into(), us),
-                Column::new("x".into(), xs),
-                Column::new("y".into(), ys),
-                Column::new("recursive_vs_iterative".into(), d_iter),
-                Column::new("recursive_vs_bernstein".into(), d_bern),
-            ],
-        )?,
-        notes: vec![
-            "x, y: the printed recursive castel; the iterative form (Codice 12 of seed 000) and the Bernstein sum give the same point to rounding.".into(),
-        ],
-    })
-}
-
-/// Seed 003's listings checked: what each printed procedure computes, and where it departs
-/// from its intent.
-///
-/// # Errors
-/// Only on an internal polars failure ([`Error::Table`]).
-pub fn seed003_checks() -> Result<Table> {
-    let id = "seed003-checks";
-    let grid = linspace(0.0, 1.0, 101);
-    let setbval = printed_setbval(6)?
-        .iter()
-        .enumerate()
-        .map(|(j, b)| {
-            let f = uniform_bspline4(j as f64 / 6.0);
-            (0..4).map(|i| (b[i] - f[i]).abs()).fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max);
-    // the uniform B-splines on integer knots: on [3, 4), N_{i,3}(3 + u) = b_i(u)
-    let integer = BSplineBasis::try_new(KnotVector::try_new((0..8).map(f64::from).collect())?, 3)?;
-    let cox = grid
-        .iter()
-        .map(|&u| {
-            let b = uniform_bspline4(u);
-            (0..4)
-                .map(|i| (integer.cox_de_boor(i, 3, 3.0 + u) - b[i]).abs())
-                .fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max);
-    let lagrange_unity = linspace(-1.0, 2.0, 301)
-        .iter()
-        .map(|&u| (lagrange4(u).iter().sum::<f64>() - 1.0).abs())
-        .fold(0.0, f64::max);
-    // B₄ with the printed denominator (3)(2)(−1) = −6 at its own node u = 2
-    const PRINTED_B4_DENOMINATOR: f64 = -6.0;
-    let printed_b4 = |u: f64| (u + 1.0) * u * (u - 1.0) / PRINTED_B4_DENOMINATOR;
-    let four = data::four_way_points(7);
-    let casteljau = grid
-        .iter()
-        .map(|&u| {
-            let a = de_casteljau_recursive(&four, u)?;
-            let b = bernstein_sum(&four, u)?;
-            Ok((a - b).amax())
-        })
-        .collect::<Result<Vec<f64>>>()?
-        .into_iter()
-        .fold(0.0, f64::max);
-    let polyline = printed_bspline_polyline(&four, 6)?;
-    let end_gap = polyline
-        .last()
-        .map_or(0.0, |p| (p - four[four.len() - 1]).norm());
-    let stale = opengl_groups(&four, 5, LastGroup::AsPrinted)?;
-    let last_group = stale.last().map_or(String::new(), |g| {
-        g.iter()
-            .map(|p| {
-                four.iter()
-                    .position(|q| q == p)
-                    .map_or("?".to_string(), |i| format!("P{i}"))
-            })
-            .collect::<Vec<_>>()
-            .join(", ")
-    });
-    let rows: Vec<(&str, String, &str)> = vec![
-        (
-            "printed setbval (nb = 6, Horner b₂, b₁ = 1 − b₀ − b₂ − b₃) vs the closed forms",
-            format!("{setbval:.3e}"),
-            "max |difference|: the listing computes the uniform cubic B-spline blending",
-        ),
-        (
-            "uniform blending vs Cox–de Boor on integer knots",
-            format!("{cox:.3e}"),
-            "max |b_i(u) − N_{i,3}(3 + u)| on integer knots: the same functions",
-        ),
-        (
-            "Lagrange blending, Σ B_i(u) − 1 on [−1, 2]",
-            format!("{lagrange_unity:.3e}"),
-            "partition of unity with B₄'s denominator (3)(2)(1) = 6",
-        ),
-        (
-            "B₄(2) with the printed denominator (3)(2)(−1)",
-            format!("{}", printed_b4(2.0)),
-            "−1 instead of 1: a sign typo in the notes (printed twice)",
-        ),
-        (
-            "recursive castel vs Bernstein sum, 7 points",
-            format!("{casteljau:.3e}"),
-            "max |difference| over 101 parameters: \"Casteljau\" and \"Bezier\" of the comparison are one curve",
-        ),
-        (
-            "printed bspline polyline: distance from its last vertex to the last point",
-            format!("{end_gap:.3e}"),
-            "make_one samples u = j/nb, j < nb, so u = 1 of the last segment is never drawn",
-        ),
-        (
-            "OpenGL spline as printed, 7 points: control points of the last group",
-            last_group,
-            "glMap1f always reads 5 points; entries beyond the 3 fresh ones are stale from the previous group",
-        ),
-    ];
-    Ok(Table {
-        id,
-        title: "Seed 003's printed procedures, checked".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new(
-                    "check".into(),
-                    rows.iter().map(|r| r.0).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "value".into(),
-                    rows.iter().map(|r| r.1.clone()).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "meaning".into(),
-                    rows.iter().map(|r| r.2).collect::<Vec<_>>(),
-                ),
-            ],
-        )?,
-        notes: vec![
-            "Every value is computed by running the procedure; the points are those of the four-way figure.".into(),
         ],
     })
 }

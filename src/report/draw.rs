@@ -1,0 +1,577 @@
+//! Figures from data: the public drawing API behind every figure of the CLI and the notebooks.
+//!
+//! Everything here takes the user's objects — any [`SurfaceDerivatives`] (a closure in
+//! [`crate::FnSurface`], a patch, a spline surface) on a [`Rect`], any [`ParametricCurve`] in
+//! the plane or in space, a basis, a study's rows, a series of numbers — and returns a
+//! [`Figure`], which draws on any plotters backend, writes anti-aliased PNG and SVG, and shows
+//! itself inline in a notebook. Defaults (camera, colours, labels, samples) are chosen so a
+//! one-line call gives a readable figure; the builders change them.
+//!
+//! ```
+//! use splinelab::prelude::*;
+//! use splinelab::report::draw::{Plot2d, Plot3d};
+//!
+//! // a surface of one's own, with its corner points and derivative arrows
+//! let bump = FnSurface::new(|s, t| Vector3::new(s, t, (s * t).sin()));
+//! let rect = Rect::new(0.0, 2.0, 0.0, 1.5);
+//! let fig = Plot3d::new("my surface")
+//!     .surface(&bump, &rect, 25)?
+//!     .corners(&bump, &rect)
+//!     .derivatives(&bump, &rect)
+//!     .figure();
+//! assert!(fig.to_svg()?.contains("<svg"));
+//!
+//! // a curve and its control polygon
+//! let knots = KnotVector::open_uniform(3, 5, 0.0, 1.0)?;
+//! let points = vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 2.0), Vector2::new(2.0, -1.0),
+//!                   Vector2::new(3.0, 1.0), Vector2::new(4.0, 0.0)];
+//! let curve = BSplineCurve::try_new(BSplineBasis::try_new(knots, 3)?, points.clone())?;
+//! let fig = Plot2d::new("a cubic B-spline", "x", "y")
+//!     .control_polygon("control polygon", &points)
+//!     .curve("curve", &curve)?
+//!     .tangents(&curve, &[0.25, 0.5, 0.75], 0.2)
+//!     .figure();
+//! assert!(fig.to_svg()?.contains("<svg"));
+//! # Ok::<(), splinelab::report::Error>(())
+//! ```
+
+use crate::bspline::basis::BSplineBasis;
+use crate::curve::ParametricCurve;
+use crate::domain::{linspace, Rect};
+use crate::grid::Grid;
+use crate::hermite::spline_surface::HermiteSpline;
+use crate::report::error::Result;
+use crate::report::figure::Figure;
+use crate::report::heatmap::{ColorScale, HeatMap};
+use crate::report::plot2d::{xy, Figure2d, Panel, Series, Style, INK, SAMPLES};
+use crate::report::render3d::{Figure3d, Marker, Scene, Segment, View};
+use crate::report::style::{LINE_PALETTE, PATCH_PALETTE};
+use crate::study::ConvergenceRow;
+use crate::surface::{tabulate, SurfaceDerivatives};
+use nalgebra::{Vector2, Vector3};
+use plotters::style::RGBColor;
+
+/// The colours of `X_s`, `X_t`, `X_st` arrows (Okabe–Ito vermillion, blue, bluish green).
+pub const DERIVATIVE_COLORS: [RGBColor; 3] = [
+    RGBColor(213, 94, 0),
+    RGBColor(0, 114, 178),
+    RGBColor(0, 158, 115),
+];
+
+/// A 3-D figure built layer by layer: surfaces, patches, corner points, derivative arrows,
+/// control nets, curves and points, over one camera.
+#[derive(Debug, Clone)]
+pub struct Plot3d {
+    title: String,
+    view: View,
+    scene: Scene,
+}
+
+impl Plot3d {
+    /// An empty figure with a title, the default camera and mesh lines on the faces.
+    pub fn new(title: impl Into<String>) -> Self {
+        Self {
+            title: title.into(),
+            view: View::default(),
+            scene: Scene {
+                mesh_lines: true,
+                ..Scene::default()
+            },
+        }
+    }
+
+    /// With another camera.
+    pub fn view(mut self, view: View) -> Self {
+        self.view = view;
+        self
+    }
+
+    /// With or without face outlines.
+    pub fn mesh(mut self, on: bool) -> Self {
+        self.scene.mesh_lines = on;
+        self
+    }
+
+    /// Adds a legend entry.
+    pub fn legend(mut self, label: impl Into<String>, color: RGBColor) -> Self {
+        self.scene.legend.push((label.into(), color));
+        self
+    }
+
+    /// Adds `surface` on `rect`, sampled `samples × samples`, coloured by height (with a
+    /// colour bar).
+    ///
+    /// # Errors
+    /// As [`tabulate`] (too few samples, a non-finite point).
+    pub fn surface<S: SurfaceDerivatives + ?Sized>(
+        mut self,
+        surface: &S,
+        rect: &Rect,
+        samples: usize,
+    ) -> Result<Self> {
+        self.scene
+            .add_surface(&tabulate(surface, rect, samples, samples)?, None, 1.0);
+        Ok(self)
+    }
+
+    /// Adds `surface` on `rect` in one colour with opacity `alpha`.
+    ///
+    /// # Errors
+    /// As [`tabulate`].
+    pub fn surface_colored<S: SurfaceDerivatives + ?Sized>(
+        mut self,
+        surface: &S,
+        rect: &Rect,
+        samples: usize,
+        color: RGBColor,
+        alpha: f64,
+    ) -> Result<Self> {
+        self.scene.add_surface(
+            &tabulate(surface, rect, samples, samples)?,
+            Some(color),
+            alpha,
+        );
+        Ok(self)
+    }
+
+    /// Adds an already tabulated surface `grid[i][j]`, by height (`None`) or in one colour.
+    pub fn grid(mut self, grid: &Grid<Vector3<f64>>, color: Option<RGBColor>, alpha: f64) -> Self {
+        self.scene.add_surface(grid, color, alpha);
+        self
+    }
+
+    /// Adds every patch of a spline surface, each sampled `samples × samples` and coloured by
+    /// `color(i, j)` with opacity `alpha`; with `outline`, each patch boundary is drawn dark
+    /// on top.
+    ///
+    /// # Errors
+    /// As [`crate::HermitePatch::tabulate`].
+    pub fn patches(
+        mut self,
+        spline: &HermiteSpline,
+        samples: usize,
+        alpha: f64,
+        outline: bool,
+        color: impl Fn(usize, usize) -> RGBColor,
+    ) -> Result<Self> {
+        let (n, m) = spline.patch_counts();
+        for i in 0..n {
+            for j in 0..m {
+                let grid = spline.patch(i, j).tabulate(samples, samples)?;
+                self.scene.add_surface(&grid, Some(color(i, j)), alpha);
+                if outline {
+                    self.outline_grid(&grid, RGBColor(30, 30, 30));
+                }
+            }
+        }
+        Ok(self)
+    }
+
+    /// Adds a spline surface with the defaults: 15 × 15 samples per patch, neighbouring
+    /// patches in different colours, outlines.
+    ///
+    /// # Errors
+    /// As [`Plot3d::patches`].
+    pub fn spline(self, spline: &HermiteSpline) -> Result<Self> {
+        self.patches(spline, 15, 0.9, true, |i, j| {
+            PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]
+        })
+    }
+
+    /// The boundary of a tabulated surface as dark segments.
+    fn outline_grid(&mut self, grid: &Grid<Vector3<f64>>, color: RGBColor) {
+        let (r, c) = (grid.rows(), grid.cols());
+        if r == 0 || c == 0 {
+            return;
+        }
+        let edges: [Vec<(usize, usize)>; 4] = [
+            (0..c).map(|k| (0, k)).collect(),
+            (0..c).map(|k| (r - 1, k)).collect(),
+            (0..r).map(|k| (k, 0)).collect(),
+            (0..r).map(|k| (k, c - 1)).collect(),
+        ];
+        for edge in &edges {
+            for w in edge.windows(2) {
+                self.scene.segments.push(Segment::line(
+                    *grid.get(w[0].0, w[0].1),
+                    *grid.get(w[1].0, w[1].1),
+                    color,
+                    2,
+                ));
+            }
+        }
+    }
+
+    /// Adds the boundary curves of `surface` over `rect` in `color`.
+    ///
+    /// # Errors
+    /// As [`tabulate`].
+    pub fn outline<S: SurfaceDerivatives + ?Sized>(
+        mut self,
+        surface: &S,
+        rect: &Rect,
+        color: RGBColor,
+    ) -> Result<Self> {
+        let grid = tabulate(surface, rect, SAMPLES / 4, SAMPLES / 4)?;
+        self.outline_grid(&grid, color);
+        Ok(self)
+    }
+
+    /// Adds the four corner points `X` of `surface` over `rect` as black dots.
+    pub fn corners<S: SurfaceDerivatives + ?Sized>(mut self, surface: &S, rect: &Rect) -> Self {
+        for (s, t) in corners(rect) {
+            self.scene.markers.push(Marker {
+                at: surface.point(s, t),
+                color: INK,
+                radius: 6,
+            });
+        }
+        self.scene.legend.push(("corner points X".into(), INK));
+        self
+    }
+
+    /// Adds the derivative vectors at the four corners of `rect` as arrows: `X_s Δs/3`,
+    /// `X_t Δt/3` and `X_st Δs Δt/3` — the first two end at the Bézier control points next
+    /// to the corner (seed 000 §4), and at the far corners they point back into the patch so
+    /// they stay readable.
+    pub fn derivatives<S: SurfaceDerivatives + ?Sized>(mut self, surface: &S, rect: &Rect) -> Self {
+        let (du, dv) = (rect.s.width(), rect.t.width());
+        for (s, t) in corners(rect) {
+            let p = surface.partials(s, t);
+            let sign_s = if s == rect.s.start() { 1.0 } else { -1.0 };
+            let sign_t = if t == rect.t.start() { 1.0 } else { -1.0 };
+            let vectors = [
+                p.ds * (sign_s * du),
+                p.dt * (sign_t * dv),
+                p.dst * (sign_s * sign_t * du * dv),
+            ];
+            for (v, color) in vectors.iter().zip(DERIVATIVE_COLORS) {
+                if v.iter().all(|x| x.is_finite()) {
+                    self.scene
+                        .segments
+                        .push(Segment::arrow(p.point, p.point + v / 3.0, color, 3));
+                }
+            }
+        }
+        let names = ["X_s Δs/3", "X_t Δt/3", "X_st ΔsΔt/3"];
+        for (name, color) in names.iter().zip(DERIVATIVE_COLORS) {
+            self.scene.legend.push((name.to_string(), color));
+        }
+        self
+    }
+
+    /// Adds a control net `net[i][j]` (lines between neighbours, dots at the points).
+    pub fn net(mut self, net: &Grid<Vector3<f64>>, color: RGBColor, label: &str) -> Self {
+        let (r, c) = (net.rows(), net.cols());
+        for i in 0..r {
+            for j in 0..c {
+                for (a, b) in [(i + 1, j), (i, j + 1)] {
+                    if a < r && b < c {
+                        self.scene.segments.push(Segment::line(
+                            *net.get(i, j),
+                            *net.get(a, b),
+                            color,
+                            2,
+                        ));
+                    }
+                }
+                self.scene.markers.push(Marker {
+                    at: *net.get(i, j),
+                    color,
+                    radius: 5,
+                });
+            }
+        }
+        if !label.is_empty() {
+            self.scene.legend.push((label.into(), color));
+        }
+        self
+    }
+
+    /// Adds points as dots.
+    pub fn points(mut self, points: &[Vector3<f64>], color: RGBColor, label: &str) -> Self {
+        self.scene.markers.extend(points.iter().map(|&at| Marker {
+            at,
+            color,
+            radius: 6,
+        }));
+        if !label.is_empty() {
+            self.scene.legend.push((label.into(), color));
+        }
+        self
+    }
+
+    /// Adds a polyline through `points` (a control polygon in space).
+    pub fn polyline(mut self, points: &[Vector3<f64>], color: RGBColor, label: &str) -> Self {
+        for w in points.windows(2) {
+            self.scene
+                .segments
+                .push(Segment::line(w[0], w[1], color, 2));
+        }
+        if !label.is_empty() {
+            self.scene.legend.push((label.into(), color));
+        }
+        self
+    }
+
+    /// Adds a space curve sampled over its domain.
+    ///
+    /// # Errors
+    /// As [`ParametricCurve::polyline`].
+    pub fn curve<C: ParametricCurve<3> + ?Sized>(
+        self,
+        curve: &C,
+        color: RGBColor,
+        label: &str,
+    ) -> Result<Self> {
+        let points = curve.polyline(SAMPLES)?;
+        Ok(self.polyline(&points, color, label))
+    }
+
+    /// The scene as it stands (to add raw segments or markers).
+    pub fn scene_mut(&mut self) -> &mut Scene {
+        &mut self.scene
+    }
+
+    /// The finished figure.
+    pub fn figure(self) -> Figure {
+        Figure3d {
+            title: self.title,
+            scene: self.scene,
+            view: self.view,
+        }
+        .into()
+    }
+}
+
+/// The corners of `rect` in order around it.
+fn corners(rect: &Rect) -> [(f64, f64); 4] {
+    let (s0, s1, t0, t1) = (rect.s.start(), rect.s.end(), rect.t.start(), rect.t.end());
+    [(s0, t0), (s1, t0), (s1, t1), (s0, t1)]
+}
+
+/// A plane figure of one panel, built series by series; curves take the palette's colours
+/// in turn.
+#[derive(Debug, Clone)]
+pub struct Plot2d {
+    panel: Panel,
+    next_color: usize,
+}
+
+impl Plot2d {
+    /// An empty panel with a title and axis labels.
+    pub fn new(title: impl Into<String>, x_label: &str, y_label: &str) -> Self {
+        Self {
+            panel: Panel::new(title, x_label, y_label),
+            next_color: 0,
+        }
+    }
+
+    fn color(&mut self) -> RGBColor {
+        let c = LINE_PALETTE[self.next_color % LINE_PALETTE.len()];
+        self.next_color += 1;
+        c
+    }
+
+    /// Equal units in x and y (for shapes).
+    pub fn equal(mut self) -> Self {
+        self.panel.equal_aspect = true;
+        self
+    }
+
+    /// Logarithmic axes.
+    pub fn log(mut self, x: bool, y: bool) -> Self {
+        self.panel = self.panel.log(x, y);
+        self
+    }
+
+    /// Adds a series as it is (any style and colour).
+    pub fn with(mut self, series: Series) -> Self {
+        self.panel.series.push(series);
+        self
+    }
+
+    /// Adds a plane curve sampled over its domain.
+    ///
+    /// # Errors
+    /// As [`ParametricCurve::polyline`].
+    pub fn curve<C: ParametricCurve<2> + ?Sized>(mut self, label: &str, curve: &C) -> Result<Self> {
+        let color = self.color();
+        Ok(self.with(Series::curve(label, curve, color)?))
+    }
+
+    /// Adds a control polygon (grey, dots at the vertices).
+    pub fn control_polygon(self, label: &str, points: &[Vector2<f64>]) -> Self {
+        self.with(Series::polygon(label, points))
+    }
+
+    /// Adds points as dots.
+    pub fn points(mut self, label: &str, points: &[Vector2<f64>]) -> Self {
+        let color = self.color();
+        self.with(Series::line(label, xy(points), color).styled(Style::Points(5)))
+    }
+
+    /// Adds the unit-free tangent `C′(t)` at each parameter as a short segment of length
+    /// `length · ‖C′(t)‖` starting at `C(t)`, with a dot at the foot.
+    pub fn tangents<C: ParametricCurve<2> + ?Sized>(
+        mut self,
+        curve: &C,
+        params: &[f64],
+        length: f64,
+    ) -> Self {
+        for (k, &t) in params.iter().enumerate() {
+            let [p, d, _] = curve.derivatives2(t);
+            let q = p + d * length;
+            let s = Series::line("tangent C′(t)", vec![(p.x, p.y), (q.x, q.y)], INK)
+                .styled(Style::LinePoints(3));
+            self.panel
+                .series
+                .push(if k == 0 { s } else { s.unlabeled() });
+        }
+        self
+    }
+
+    /// Adds `y = f(x)` on `[a, b]`.
+    pub fn function(mut self, label: &str, a: f64, b: f64, f: impl Fn(f64) -> f64) -> Self {
+        let color = self.color();
+        let points = crate::report::plot2d::sampled(a, b, |x| (x, f(x)));
+        self.with(Series::line(label, points, color))
+    }
+
+    /// Adds a series of `(x, y)` points joined by a line with dots.
+    pub fn series(mut self, label: &str, points: Vec<(f64, f64)>) -> Self {
+        let color = self.color();
+        self.with(Series::line(label, points, color).styled(Style::LinePoints(4)))
+    }
+
+    /// The panel (to lay several out with [`panels`]).
+    pub fn panel(self) -> Panel {
+        self.panel
+    }
+
+    /// The finished figure.
+    pub fn figure(self) -> Figure {
+        let title = self.panel.title.clone();
+        let mut panel = self.panel;
+        panel.title = String::new();
+        Figure2d::new(title, vec![panel], (1, 1)).into()
+    }
+}
+
+/// Several panels under one title, `rows × cols`.
+pub fn panels(title: impl Into<String>, panels: Vec<Panel>, layout: (usize, usize)) -> Figure {
+    Figure2d::new(title, panels, layout).into()
+}
+
+/// A line plot of named series (`log`: logarithmic x and y axes).
+pub fn series(
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    data: &[(&str, Vec<(f64, f64)>)],
+    log: (bool, bool),
+) -> Figure {
+    data.iter()
+        .fold(
+            Plot2d::new(title, x_label, y_label).log(log.0, log.1),
+            |p, (label, pts)| p.series(label, pts.clone()),
+        )
+        .figure()
+}
+
+/// Every basis function `N_{i,p}` of `basis` over its domain, one colour each.
+pub fn bases(basis: &BSplineBasis, title: &str) -> Figure {
+    let (a, b) = basis.domain();
+    let ts = linspace(a, b, SAMPLES);
+    let values: Vec<Vec<f64>> = ts.iter().map(|&t| basis.all(t)).collect();
+    let p = basis.degree();
+    let mut plot = Plot2d::new(title, "t", "N_{i,p}(t)");
+    for i in 0..basis.len() {
+        let pts = ts.iter().zip(&values).map(|(&t, v)| (t, v[i])).collect();
+        let color = LINE_PALETTE[i % LINE_PALETTE.len()];
+        plot = plot.with(Series::line(format!("N{i},{p}"), pts, color));
+    }
+    plot.figure()
+}
+
+/// The error `‖X_h(u, v) − X(u, v)‖` of a spline surface against the surface it interpolates,
+/// over the spline's domain on `samples × samples` points, on a log colour scale over four
+/// decades, with the patch boundaries in white.
+///
+/// # Errors
+/// As [`tabulate`] and [`HermiteSpline::tabulate`].
+pub fn error_map<S: SurfaceDerivatives + ?Sized>(
+    exact: &S,
+    spline: &HermiteSpline,
+    samples: usize,
+) -> Result<Figure> {
+    let rect = spline.domain();
+    let u = rect.s.linspace(samples)?;
+    let v = rect.t.linspace(samples)?;
+    let approx = spline.tabulate(&u, &v)?;
+    let truth = tabulate(exact, &rect, samples, samples)?;
+    let err = Grid::from_fn(samples, samples, |i, j| {
+        (approx.get(i, j) - truth.get(i, j)).norm()
+    });
+    let (n, m) = spline.patch_counts();
+    Ok(HeatMap {
+        title: format!("Error |X_h − X| over the parameters, {n}×{m} patches"),
+        x_label: "u (the s direction)".into(),
+        y_label: "v (the t direction)".into(),
+        bar_label: "|X_h − X|".into(),
+        x: u,
+        y: v,
+        values: err,
+        x_lines: spline.u().nodes().to_vec(),
+        y_lines: spline.v().nodes().to_vec(),
+        scale: ColorScale::Log { decades: 4.0 },
+        footnote: Some("white lines: patch boundaries; the error vanishes at the nodes".into()),
+    }
+    .into())
+}
+
+/// The convergence plot of a study ([`crate::study::convergence`]): max-abs error per
+/// coordinate against the patch size `h`, log-log, with a reference slope `h⁴` one decade
+/// below the finest point.
+pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
+    let colors = [LINE_PALETTE[1], LINE_PALETTE[0], LINE_PALETTE[2]];
+    let mut plot =
+        Plot2d::new(title, "patch size h = 1/n", "max |X_h − X| per coordinate").log(true, true);
+    for (k, name) in ["x", "y", "z"].iter().enumerate() {
+        let pts = rows.iter().map(|r| (r.h, r.errors.max_abs[k])).collect();
+        plot = plot.with(
+            Series::line(format!("coordinate {name}"), pts, colors[k]).styled(Style::LinePoints(5)),
+        );
+    }
+    let finest = rows
+        .iter()
+        .filter(|r| r.h > 0.0)
+        .min_by(|a, b| a.h.total_cmp(&b.h));
+    let h_max = rows.iter().map(|r| r.h).fold(0.0, f64::max);
+    if let Some(last) = finest {
+        let e0 = last
+            .errors
+            .max_abs
+            .iter()
+            .copied()
+            .filter(|e| *e > 0.0)
+            .fold(f64::INFINITY, f64::min)
+            * 0.1;
+        if e0.is_finite() {
+            let reference = [last.h, h_max]
+                .iter()
+                .map(|&h| (h, e0 * (h / last.h).powi(4)))
+                .collect();
+            plot = plot.with(
+                Series::line("reference slope 4 (C·h⁴)", reference, INK).styled(Style::Dashed),
+            );
+        }
+    }
+    let mut fig = plot.figure();
+    if let crate::report::figure::Drawing::Plane(f) = &mut fig.drawing {
+        for p in &mut f.panels {
+            p.legend = plotters::prelude::SeriesLabelPosition::UpperLeft;
+        }
+    }
+    fig
+}

@@ -1,0 +1,65 @@
+//! The report layer's error: the mathematics' [`crate::Error`] plus what only files, ids,
+//! figures and tables can get wrong.
+
+use std::path::PathBuf;
+
+/// Everything that can go wrong when building, drawing or writing an output.
+///
+/// `Debug` prints the `Display` message, as [`crate::Error`] does, so a notebook cell or an
+/// `.expect(…)` shows words, not fields.
+#[derive(Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An error of the mathematics behind the output.
+    #[error(transparent)]
+    Core(#[from] crate::Error),
+    /// Reading or writing a file failed.
+    #[error("{path}: {message}")]
+    Io {
+        /// The file or folder.
+        path: PathBuf,
+        /// What the operating system said.
+        message: String,
+    },
+    /// An output or workload id that does not exist.
+    #[error("unknown {what} id `{id}` (see --list)")]
+    UnknownId {
+        /// Output or workload.
+        what: &'static str,
+        /// The id asked for.
+        id: String,
+    },
+    /// A figure could not be drawn (or encoded).
+    #[error("figure {name}: {message}")]
+    Figure {
+        /// The figure's id or title.
+        name: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// A table could not be built or read (a polars error, as text).
+    #[error("table {name}: {message}")]
+    Table {
+        /// The table's id or title.
+        name: String,
+        /// What polars said.
+        message: String,
+    },
+}
+
+impl std::fmt::Debug for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
+}
+
+/// Shorthand for `Result<T, splinelab::report::Error>`.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// An [`Error::Io`] maker for `path`, for `map_err`.
+pub(crate) fn io_err(path: &std::path::Path) -> impl FnOnce(std::io::Error) -> Error + '_ {
+    move |e| Error::Io {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    }
+}

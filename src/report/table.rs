@@ -1,0 +1,353 @@
+//! Tables: a polars `DataFrame` with an id, a title and notes; Markdown, HTML and CSV for any
+//! DataFrame; and tables built from any tabulation, error study or convergence study.
+
+use crate::domain::Rect;
+use crate::metrics::CoordErrors;
+use crate::report::error::{io_err, Error, Result};
+use crate::report::files::write_atomic;
+use crate::study::{ConvergenceOrders, ConvergenceRow};
+use crate::surface::{partials_on_grid, SurfaceDerivatives};
+use nalgebra::Vector3;
+use polars::prelude::{AnyValue, Column, CsvWriter, DataFrame, SerWriter};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// A table ready to be shown or written: an id, a title, the data and notes for the reader.
+#[derive(Debug, Clone)]
+pub struct Table {
+    /// Id (file stem).
+    pub id: String,
+    /// One-line title.
+    pub title: String,
+    /// The data.
+    pub df: DataFrame,
+    /// What the columns mean and what follows from them.
+    pub notes: Vec<String>,
+}
+
+/// The names of the three coordinates.
+pub const COORDS: [&str; 3] = ["x", "y", "z"];
+
+/// A DataFrame from columns, a polars error as [`Error::Table`] naming the table.
+///
+/// # Errors
+/// [`Error::Table`] if the columns differ in length or repeat a name.
+pub fn frame(name: &str, columns: Vec<Column>) -> Result<DataFrame> {
+    DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
+        name: name.to_string(),
+        message: e.to_string(),
+    })
+}
+
+impl Table {
+    /// A table without notes.
+    pub fn new(id: impl Into<String>, title: impl Into<String>, df: DataFrame) -> Self {
+        Self {
+            id: id.into(),
+            title: title.into(),
+            df,
+            notes: Vec::new(),
+        }
+    }
+
+    /// The same table with one more note.
+    pub fn note(mut self, note: impl Into<String>) -> Self {
+        self.notes.push(note.into());
+        self
+    }
+
+    /// The table as Markdown: title, a pipe table (floats with 5 significant digits), notes.
+    ///
+    /// # Errors
+    /// [`Error::Table`] if polars cannot read a cell.
+    pub fn to_markdown(&self) -> Result<String> {
+        let mut md = format!("# {}\n\n", self.title);
+        md.push_str(&markdown(&self.df)?);
+        if !self.notes.is_empty() {
+            md.push('\n');
+            for note in &self.notes {
+                let _ = writeln!(md, "- {note}");
+            }
+        }
+        Ok(md)
+    }
+
+    /// The table as an HTML fragment with every row and column (for notebooks, where polars'
+    /// text display would elide rows): title, table, notes.
+    ///
+    /// # Errors
+    /// [`Error::Table`] if polars cannot read a cell.
+    pub fn to_html(&self) -> Result<String> {
+        let mut html = format!("<h4>{}</h4>\n", escape_html(&self.title));
+        html.push_str(&html_table(&self.df)?);
+        html.push_str("\n<ul>\n");
+        for note in &self.notes {
+            let _ = writeln!(html, "<li>{}</li>", escape_html(note));
+        }
+        html.push_str("</ul>");
+        Ok(html)
+    }
+
+    /// Writes `<dir>/<id>.csv` (full precision) and `<dir>/<id>.md`, each through a
+    /// temporary file renamed into place; returns the paths.
+    ///
+    /// # Errors
+    /// [`Error::Io`] if the folder or a file cannot be written.
+    pub fn write(&self, dir: &Path) -> Result<Vec<PathBuf>> {
+        std::fs::create_dir_all(dir).map_err(io_err(dir))?;
+        let csv_path = dir.join(format!("{}.csv", self.id));
+        write_atomic(&csv_path, &csv(&self.df)?)?;
+        let md_path = dir.join(format!("{}.md", self.id));
+        write_atomic(&md_path, self.to_markdown()?.as_bytes())?;
+        Ok(vec![csv_path, md_path])
+    }
+
+    /// Shows the table in a notebook as HTML (title, every row, notes); falls back to
+    /// polars' text display if a cell cannot be read.
+    pub fn evcxr_display(&self) {
+        match self.to_html() {
+            Ok(html) => println!("EVCXR_BEGIN_CONTENT text/html\n{html}\nEVCXR_END_CONTENT"),
+            Err(_) => println!("{}\n\n{}", self.title, self.df),
+        }
+    }
+}
+
+/// Formats one cell for reading: floats with 5 significant digits, missing values as `—`.
+fn cell(v: &AnyValue) -> String {
+    match v {
+        AnyValue::Null => "—".into(),
+        AnyValue::Float64(x) => {
+            let a = x.abs();
+            if *x == 0.0 {
+                "0".into()
+            } else if !x.is_finite() {
+                x.to_string()
+            } else if (1e-3..1e4).contains(&a) {
+                let decimals = (4 - a.log10().floor() as i32).max(0) as usize;
+                format!("{x:.decimals$}")
+            } else {
+                format!("{x:.4e}")
+            }
+        }
+        AnyValue::Boolean(b) => if *b { "yes" } else { "no" }.into(),
+        AnyValue::String(s) => s.to_string(),
+        other => other.to_string(),
+    }
+}
+
+/// Column names and every row of a DataFrame as display strings.
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot read a cell.
+pub fn display_rows(df: &DataFrame) -> Result<(Vec<String>, Vec<Vec<String>>)> {
+    let names = df
+        .get_column_names()
+        .iter()
+        .map(|n| n.to_string())
+        .collect();
+    let rows = (0..df.height())
+        .map(|i| {
+            df.columns()
+                .iter()
+                .map(|c| {
+                    c.get(i).map(|v| cell(&v)).map_err(|e| Error::Table {
+                        name: c.name().to_string(),
+                        message: e.to_string(),
+                    })
+                })
+                .collect()
+        })
+        .collect::<Result<_>>()?;
+    Ok((names, rows))
+}
+
+/// Any DataFrame as a Markdown pipe table.
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot read a cell.
+pub fn markdown(df: &DataFrame) -> Result<String> {
+    let (names, rows) = display_rows(df)?;
+    let mut md = String::new();
+    let _ = writeln!(md, "| {} |", names.join(" | "));
+    let _ = writeln!(md, "|{}", "---|".repeat(names.len()));
+    for row in rows {
+        let _ = writeln!(md, "| {} |", row.join(" | "));
+    }
+    Ok(md)
+}
+
+fn escape_html(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// Any DataFrame as an HTML `<table>` with every row and column.
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot read a cell.
+pub fn html_table(df: &DataFrame) -> Result<String> {
+    let (names, rows) = display_rows(df)?;
+    let mut html = String::from("<table>\n<thead><tr>");
+    for n in &names {
+        let _ = write!(html, "<th>{}</th>", escape_html(n));
+    }
+    html.push_str("</tr></thead>\n<tbody>\n");
+    for row in rows {
+        html.push_str("<tr>");
+        for c in row {
+            let _ = write!(html, "<td>{}</td>", escape_html(&c));
+        }
+        html.push_str("</tr>\n");
+    }
+    html.push_str("</tbody>\n</table>");
+    Ok(html)
+}
+
+/// Any DataFrame as CSV (full precision).
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot write it.
+pub fn csv(df: &DataFrame) -> Result<Vec<u8>> {
+    let mut out = Vec::new();
+    CsvWriter::new(&mut out)
+        .finish(&mut df.clone())
+        .map_err(|e| Error::Table {
+            name: "csv".into(),
+            message: e.to_string(),
+        })?;
+    Ok(out)
+}
+
+/// Writes any DataFrame to `path` as CSV (through a temporary file renamed into place).
+///
+/// # Errors
+/// [`Error::Table`] if polars cannot write it, [`Error::Io`] if the file cannot be written.
+pub fn write_csv(df: &DataFrame, path: &Path) -> Result<()> {
+    write_atomic(path, &csv(df)?)
+}
+
+/// A surface tabulated on `ns × nt` points of `rect` with its exact partials: columns `s`, `t`,
+/// then `x, y, z`, `x_s, y_s, z_s`, `x_t, …`, `x_st, …` (hyper-dual numbers, one evaluation
+/// per point).
+///
+/// # Errors
+/// As [`partials_on_grid`] (too few or too many samples, a non-finite surface).
+pub fn tabulation<S: SurfaceDerivatives + Sync + ?Sized>(
+    surface: &S,
+    rect: &Rect,
+    ns: usize,
+    nt: usize,
+) -> Result<Table> {
+    let s = rect.s.linspace(ns)?;
+    let t = rect.t.linspace(nt)?;
+    let grid = partials_on_grid(surface, &s, &t)?;
+    let mut columns = vec![
+        Column::new(
+            "s".into(),
+            (0..ns * nt).map(|k| s[k / nt]).collect::<Vec<f64>>(),
+        ),
+        Column::new(
+            "t".into(),
+            (0..ns * nt).map(|k| t[k % nt]).collect::<Vec<f64>>(),
+        ),
+    ];
+    type Part = fn(&crate::surface::Partials) -> Vector3<f64>;
+    let parts: [(&str, Part); 4] = [
+        ("", |p| p.point),
+        ("_s", |p| p.ds),
+        ("_t", |p| p.dt),
+        ("_st", |p| p.dst),
+    ];
+    for (suffix, get) in parts {
+        for (k, axis) in COORDS.iter().enumerate() {
+            let values: Vec<f64> = grid.as_slice().iter().map(|p| get(p)[k]).collect();
+            columns.push(Column::new(format!("{axis}{suffix}").into(), values));
+        }
+    }
+    let title = format!(
+        "Surface and exact partials on {ns}×{nt} points of [{}, {}] × [{}, {}]",
+        rect.s.start(),
+        rect.s.end(),
+        rect.t.start(),
+        rect.t.end()
+    );
+    Ok(Table::new("tabulation", title, frame("tabulation", columns)?)
+        .note("Partials from one hyper-dual evaluation per point (num-dual HyperDual64): exact to rounding."))
+}
+
+/// Error studies side by side: one row per case and coordinate with the report's measure
+/// (mean of per-patch matrix 2-norms), max-abs and RMS.
+///
+/// # Errors
+/// [`Error::Table`] only on an internal polars failure.
+pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> Result<Table> {
+    let (mut case, mut coord) = (vec![], vec![]);
+    let (mut norm, mut max_abs, mut rms) = (vec![], vec![], vec![]);
+    for (name, e) in cases {
+        for (k, axis) in COORDS.iter().enumerate() {
+            case.push(name.clone());
+            coord.push(*axis);
+            norm.push(e.report_norm[k]);
+            max_abs.push(e.max_abs[k]);
+            rms.push(e.rms[k]);
+        }
+    }
+    let df = frame(
+        id,
+        vec![
+            Column::new("case".into(), case),
+            Column::new("coord".into(), coord),
+            Column::new("report_norm".into(), norm),
+            Column::new("max_abs".into(), max_abs),
+            Column::new("rms".into(), rms),
+        ],
+    )?;
+    Ok(Table::new(id, title, df)
+        .note("report_norm: the report's measure, the mean over patches of the matrix 2-norm of each patch's error samples (MATLAB norm); max_abs and rms over all samples."))
+}
+
+/// A convergence study ([`crate::study::convergence`]) as a table: per `n` and coordinate,
+/// max-abs, RMS and the report's measure with the observed order against the previous row.
+///
+/// # Errors
+/// [`Error::Table`] only on an internal polars failure.
+pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Table> {
+    let (mut n_col, mut h_col, mut coord) = (vec![], vec![], vec![]);
+    // value and order (None on the first row, which has no previous row) of each measure
+    type Measure = fn(&CoordErrors) -> Vector3<f64>;
+    type Order = fn(&ConvergenceOrders) -> [Option<f64>; 3];
+    let measures: [(&str, Measure, Order); 3] = [
+        ("max_abs", |e| e.max_abs, |o| o.max_abs),
+        ("rms", |e| e.rms, |o| o.rms),
+        ("report_norm", |e| e.report_norm, |o| o.report_norm),
+    ];
+    let mut values: [Vec<f64>; 3] = Default::default();
+    let mut orders: [Vec<Option<f64>>; 3] = Default::default();
+    for row in rows {
+        for (k, axis) in COORDS.iter().enumerate() {
+            n_col.push(row.n as u32);
+            h_col.push(row.h);
+            coord.push(*axis);
+            for (q, (_, get, order)) in measures.iter().enumerate() {
+                values[q].push(get(&row.errors)[k]);
+                orders[q].push(row.order.as_ref().and_then(|o| order(o)[k]));
+            }
+        }
+    }
+    let mut columns = vec![
+        Column::new("n".into(), n_col),
+        Column::new("h".into(), h_col),
+        Column::new("coord".into(), coord),
+    ];
+    for (q, (name, _, _)) in measures.iter().enumerate() {
+        columns.push(Column::new((*name).into(), std::mem::take(&mut values[q])));
+        columns.push(Column::new(
+            format!("order_{name}").into(),
+            std::mem::take(&mut orders[q]),
+        ));
+    }
+    Ok(Table::new(id, title, frame(id, columns)?)
+        .note("order_*: log(e_prev/e)/log(h_prev/h) against the previous row; bicubic Hermite interpolation converges as h⁴ (— where an error is zero or the previous row is missing).")
+        .note("report_norm is the report's measure (mean over patches of per-patch matrix 2-norms)."))
+}

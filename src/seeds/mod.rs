@@ -1,0 +1,7 @@
+//! The seeds' worked examples as data: knot vectors, control points, parameters and printed
+//! values of the lecture seeds, with no I/O. Tests, the report layer and the notebooks take
+//! their fixtures from here, so the mathematics can be tested without the report stack.
+
+pub mod seed000;
+pub mod seed001;
+pub mod seed003;
