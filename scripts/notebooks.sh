@@ -4,7 +4,12 @@
 # (cargo install, pinned). Executed copies go to out/notebooks/; the committed notebooks keep
 # no outputs. Fails, naming the notebook and cell, on any cell error, compile error or panic.
 #
+# Each executed notebook is also written as HTML with its figures (out/notebooks/<name>.html).
+#
 # usage: scripts/notebooks.sh [NOTEBOOK.ipynb ...]   (default: notebooks/[0-9][0-9]-*.ipynb)
+#        scripts/notebooks.sh --lab                  JupyterLab on notebooks/ with the same kernel,
+#                                                    environment and compile cache (variables
+#                                                    survive a panic there, unlike the headless run)
 # env:   SPLINELAB_STATE  where the venv and compile caches are kept (default ~/.cache/splinelab)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -13,6 +18,8 @@ export PATH="$HOME/.cargo/bin:$PATH"
 
 EVCXR_VERSION=0.22.0
 NBCLIENT_VERSION=0.11.0
+NBCONVERT_VERSION=7.16.6
+JUPYTERLAB_VERSION=4.4.10
 CELL_TIMEOUT=1800
 
 state="${SPLINELAB_STATE:-$HOME/.cache/splinelab}"
@@ -25,6 +32,10 @@ if [ ! -x "$venv/bin/jupyter-execute" ]; then
     echo "notebooks: installing nbclient $NBCLIENT_VERSION into $venv"
     python3 -m venv "$venv"
     "$venv/bin/pip" install --quiet --disable-pip-version-check "nbclient==$NBCLIENT_VERSION"
+fi
+if [ ! -x "$venv/bin/jupyter-nbconvert" ]; then
+    echo "notebooks: installing nbconvert $NBCONVERT_VERSION into $venv"
+    "$venv/bin/pip" install --quiet --disable-pip-version-check "nbconvert==$NBCONVERT_VERSION"
 fi
 
 # 2. The Rust kernel.
@@ -48,7 +59,18 @@ mkdir -p "$XDG_CACHE_HOME" "$EVCXR_TMPDIR"
 # naming the folder of libstd (rustc --print target-libdir) works wherever the state lives.
 export LD_LIBRARY_PATH="$(rustc --print target-libdir)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
-# 4. Execute.
+# 4. Interactive: JupyterLab with the same kernel, caches and library path; evcxr's defaults
+# for panics (variables kept) instead of the headless run's.
+if [ "${1:-}" = "--lab" ]; then
+    if [ ! -x "$venv/bin/jupyter-lab" ]; then
+        echo "notebooks: installing JupyterLab $JUPYTERLAB_VERSION into $venv"
+        "$venv/bin/pip" install --quiet --disable-pip-version-check "jupyterlab==$JUPYTERLAB_VERSION"
+    fi
+    export EVCXR_CONFIG_DIR="$root/scripts/evcxr-lab"
+    exec "$venv/bin/jupyter-lab" --notebook-dir="$root/notebooks"
+fi
+
+# 5. Execute.
 if [ "$#" -gt 0 ]; then notebooks=("$@"); else notebooks=(notebooks/[0-9][0-9]-*.ipynb); fi
 out="$root/out/notebooks"
 mkdir -p "$out"
@@ -61,8 +83,9 @@ for nb in "${notebooks[@]}"; do
     if "$venv/bin/jupyter-execute" --kernel_name=rust --timeout="$CELL_TIMEOUT" \
         --output="${name}_executed" "$nb"; then
         mv "$dir/${name}_executed.ipynb" "$out/${name}.ipynb"
-        if "$venv/bin/python" "$root/scripts/check_notebooks.py" "$out/${name}.ipynb"; then
-            echo "notebooks: $nb ok ($(( $(date +%s) - start )) s)"
+        if "$venv/bin/python" "$root/scripts/check_notebooks.py" "$out/${name}.ipynb" &&
+            "$venv/bin/jupyter-nbconvert" --to html --log-level=WARN "$out/${name}.ipynb"; then
+            echo "notebooks: $nb ok ($(( $(date +%s) - start )) s), $out/${name}.html"
             continue
         fi
     else

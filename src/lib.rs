@@ -91,5 +91,5 @@ pub use study::{
 };
 pub use surface::{
     partials_on_grid, partials_on_grid_into, tabulate, ExpSurface, FnSurface, ParametricSurface,
-    Partials, Sphere, SurfaceDerivatives, Torus,
+    Partials, Sphere, SurfaceDerivatives, SurfaceFn, Torus,
 };

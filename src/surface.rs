@@ -114,6 +114,28 @@ where
     }
 }
 
+/// The closure type of [`FnSurface::boxed`]: a boxed `Fn(HyperDual64, HyperDual64) ->
+/// Vector3<HyperDual64>`, a type that can be named, so the surface can be kept in a variable
+/// of a notebook (evcxr must name the type of every variable it keeps between cells, and a
+/// closure's own type has no name).
+pub type SurfaceFn = Box<dyn Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64> + Send + Sync>;
+
+impl FnSurface<SurfaceFn> {
+    /// Wraps the closure `f(s, t)` in a box, for a surface kept in a notebook variable.
+    ///
+    /// # Examples
+    /// ```
+    /// use splinelab::prelude::*;
+    /// let bump = FnSurface::boxed(|s, t| Vector3::new(s, t, (s * t).sin()));
+    /// assert_eq!(bump.partials(0.0, 2.0).ds.z, 2.0);
+    /// ```
+    pub fn boxed(
+        f: impl Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64> + Send + Sync + 'static,
+    ) -> Self {
+        Self { f: Box::new(f) }
+    }
+}
+
 impl<F> SurfaceDerivatives for FnSurface<F>
 where
     F: Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64>,

@@ -369,3 +369,51 @@ fn surfaces_written_for_dual_numbers_only_are_accepted() {
     .expect("map");
     assert!(fig.to_svg().expect("svg").contains("2×2"));
 }
+
+#[test]
+fn the_notebooks_try_it_helpers_hold_their_claims() {
+    // 05: C¹ across the seams of a user's uneven partition, read from each side's own patch
+    let torus = splinelab::Torus::default();
+    let u = Partition::try_new(vec![0.0, 0.2, 0.7, 1.0]).expect("partition");
+    let v = Partition::try_new(vec![0.0, 0.4, 1.0]).expect("partition");
+    let spline = HermiteSpline::try_from_surface(&torus, u, v).expect("spline");
+    let seams = report::table::seam_continuity(&spline, 11).expect("seams");
+    assert_eq!(seams.df.height(), 2 + 1, "two u-seams and one v-seam");
+    let col = |name: &str| -> Vec<f64> {
+        let c = seams.df.column(name).expect("column");
+        c.f64().expect("f64").into_no_null_iter().collect()
+    };
+    for ((jx, jd), size) in col("max_jump_X")
+        .into_iter()
+        .zip(col("max_jump_cross_derivative"))
+        .zip(col("max_cross_derivative"))
+    {
+        assert!(
+            jx < 1e-14 && jd < 1e-13 * size.max(1.0),
+            "jumps {jx:e}, {jd:e}"
+        );
+        assert!(
+            size > 0.1,
+            "the cross derivative is not trivially zero: {size}"
+        );
+    }
+    // a control: a surface spline is not C¹ against a *different* partition's patch widths,
+    // so the scaling matters — the unscaled local derivatives differ across an uneven seam
+    let l = splinelab::SurfaceDerivatives::partials(&spline.patch(0, 0), 1.0, 0.5);
+    let r = splinelab::SurfaceDerivatives::partials(&spline.patch(1, 0), 0.0, 0.5);
+    assert!((l.ds - r.ds).amax() > 0.1, "unscaled X_s should jump");
+    // 06: an error study over the user's cases, one row per case and coordinate
+    let study =
+        report::table::error_study(&torus, &Rect::unit(), &[(2, 2), (3, 3)], 15).expect("study");
+    assert_eq!(study.df.height(), 6);
+    // 08: de Casteljau for the user's points
+    let pts = [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 3.0),
+        Vector2::new(3.0, 3.5),
+        Vector2::new(5.0, 0.5),
+    ];
+    let fig = draw::de_casteljau(&pts, &[0.2, 0.5, 0.8], "mine").expect("figure");
+    assert!(ink(pixels(&fig.to_rgb().expect("draws"))) > MIN_INK_PLANE);
+    assert!(draw::de_casteljau(&[], &[0.5], "none").is_err());
+}

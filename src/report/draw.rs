@@ -288,6 +288,17 @@ impl Plot3d {
         self
     }
 
+    /// Adds the 16 control points and the net of a Bézier patch.
+    pub fn bezier_net(
+        self,
+        patch: &crate::bezier::patch::BezierPatch,
+        color: RGBColor,
+        label: &str,
+    ) -> Self {
+        let net = patch.net();
+        self.net(&Grid::from_fn(4, 4, |i, j| net[i][j]), color, label)
+    }
+
     /// Adds points as dots.
     pub fn points(mut self, points: &[Vector3<f64>], color: RGBColor, label: &str) -> Self {
         self.scene.markers.extend(points.iter().map(|&at| Marker {
@@ -574,4 +585,47 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
         }
     }
     fig
+}
+
+/// de Casteljau's construction for any control points, one panel per parameter `u` (at most
+/// six): the control polygon, the curve, and every level of repeated linear interpolation
+/// down to the point `P(u)`.
+///
+/// # Errors
+/// As [`crate::de_casteljau`] (no points, non-finite coordinates).
+pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<Figure> {
+    let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
+        .into_iter()
+        .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
+        .collect::<crate::Result<_>>()?;
+    let curve = xy(&curve);
+    let mut panels = Vec::new();
+    for &u in us.iter().take(6) {
+        let levels = crate::bezier::de_casteljau::de_casteljau_levels(points, u)?;
+        let mut panel = Panel::new(format!("u = {u}"), "x", "y")
+            .equal()
+            .legend_at(plotters::prelude::SeriesLabelPosition::LowerMiddle)
+            .with(Series::polygon("control points", points))
+            .with(Series::line("Bézier curve", curve.clone(), LINE_PALETTE[0]).width(3));
+        for (level, pts) in levels.iter().enumerate().skip(1) {
+            let style = if pts.len() == 1 {
+                Style::Points(7)
+            } else {
+                Style::LinePoints(4)
+            };
+            let label = if pts.len() == 1 {
+                format!("P(u), level {level}")
+            } else {
+                format!("level {level}")
+            };
+            panel = panel.with(
+                Series::line(label, xy(pts), LINE_PALETTE[level % LINE_PALETTE.len()])
+                    .styled(style),
+            );
+        }
+        panels.push(panel);
+    }
+    Ok(Figure::from(
+        Figure2d::new(title, panels, (1, us.len().clamp(1, 6))).shared_legend(),
+    ))
 }

@@ -351,3 +351,111 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
         .note("order_*: log(e_prev/e)/log(h_prev/h) against the previous row; bicubic Hermite interpolation converges as h⁴ (— where an error is zero or the previous row is missing).")
         .note("report_norm is the report's measure (mean over patches of per-patch matrix 2-norms)."))
 }
+
+/// The continuity of a spline surface across its seams: for every interior node `uᵢ` (and
+/// `vⱼ`), sampled at `samples` points along it, the largest jump of `X` and of the
+/// cross-seam derivative (`X_u` across a u-seam, `X_v` across a v-seam) between the patch
+/// on the left and the patch on the right, each read from its own Hermite matrix at its own
+/// edge (`s = 1` vs `s = 0`) and scaled by its own width (`X_u = X_s / Δu`), and the size of
+/// that derivative for scale. C¹ interpolation makes both jumps zero up to rounding.
+///
+/// # Errors
+/// [`crate::Error::TooFewSamples`] if `samples < 2`; [`Error::Table`] only on an internal
+/// polars failure.
+pub fn seam_continuity(
+    spline: &crate::hermite::spline_surface::HermiteSpline,
+    samples: usize,
+) -> Result<Table> {
+    let local = crate::domain::Interval::try_new(0.0, 1.0)?.linspace(samples)?;
+    let (n, m) = spline.patch_counts();
+    let (u, v) = (spline.u().nodes(), spline.v().nodes());
+    let (mut dir, mut node, mut jump_x, mut jump_d, mut size_d) =
+        (vec![], vec![], vec![], vec![], vec![]);
+    let mut seam = |name: &'static str, at: f64, pairs: Vec<(Partials2, Partials2)>| {
+        let (mut jx, mut jd, mut sd) = (0.0f64, 0.0f64, 0.0f64);
+        for (a, b) in pairs {
+            jx = jx.max((a.0 - b.0).amax());
+            jd = jd.max((a.1 - b.1).amax());
+            sd = sd.max(a.1.amax());
+        }
+        dir.push(name);
+        node.push(at);
+        jump_x.push(jx);
+        jump_d.push(jd);
+        size_d.push(sd);
+    };
+    for i in 1..n {
+        let (wl, wr) = (u[i] - u[i - 1], u[i + 1] - u[i]);
+        let pairs = (0..m)
+            .flat_map(|j| local.iter().map(move |&t| (j, t)))
+            .map(|(j, t)| {
+                let l =
+                    crate::surface::SurfaceDerivatives::partials(&spline.patch(i - 1, j), 1.0, t);
+                let r = crate::surface::SurfaceDerivatives::partials(&spline.patch(i, j), 0.0, t);
+                ((l.point, l.ds / wl), (r.point, r.ds / wr))
+            })
+            .collect();
+        seam("u", u[i], pairs);
+    }
+    for j in 1..m {
+        let (wl, wr) = (v[j] - v[j - 1], v[j + 1] - v[j]);
+        let pairs = (0..n)
+            .flat_map(|i| local.iter().map(move |&s| (i, s)))
+            .map(|(i, s)| {
+                let l =
+                    crate::surface::SurfaceDerivatives::partials(&spline.patch(i, j - 1), s, 1.0);
+                let r = crate::surface::SurfaceDerivatives::partials(&spline.patch(i, j), s, 0.0);
+                ((l.point, l.dt / wl), (r.point, r.dt / wr))
+            })
+            .collect();
+        seam("v", v[j], pairs);
+    }
+    let df = frame(
+        "seams",
+        vec![
+            Column::new("seam".into(), dir),
+            Column::new("node".into(), node),
+            Column::new("max_jump_X".into(), jump_x),
+            Column::new("max_jump_cross_derivative".into(), jump_d),
+            Column::new("max_cross_derivative".into(), size_d),
+        ],
+    )?;
+    Ok(Table::new("seams", "Continuity across the seams of the spline surface", df)
+        .note("Each side read from its own patch at its own edge; the cross derivative is X_u = X_s/Δu across a u-seam and X_v = X_t/Δv across a v-seam. Zero jumps (to rounding) are C¹ continuity."))
+}
+
+/// A point and the cross-seam derivative.
+type Partials2 = (Vector3<f64>, Vector3<f64>);
+
+/// An error study of `surface` on `rect` for several patch counts `(n, m)`: each case's
+/// uniform `n × m` Hermite spline, `prec × prec` samples per patch, measured by the report's
+/// norm, max-abs and RMS ([`crate::uniform_spline_errors`] with the Hermite matrix form).
+///
+/// # Errors
+/// As [`crate::uniform_spline_errors`].
+pub fn error_study<S: SurfaceDerivatives + Sync + ?Sized>(
+    surface: &S,
+    rect: &Rect,
+    cases: &[(usize, usize)],
+    prec: usize,
+) -> Result<Table> {
+    let rows = cases
+        .iter()
+        .map(|&(n, m)| {
+            let e = crate::study::uniform_spline_errors(
+                surface,
+                rect,
+                n,
+                m,
+                prec,
+                crate::study::PatchEvaluation::HermiteMatrix,
+            )?;
+            Ok((format!("{n}×{m}"), e))
+        })
+        .collect::<crate::Result<Vec<_>>>()?;
+    coord_errors(
+        "error-study",
+        &format!("Error of the n × m Hermite spline, {prec}×{prec} samples per patch"),
+        &rows,
+    )
+}

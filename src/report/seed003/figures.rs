@@ -2,7 +2,7 @@
 //! OpenGL evaluators, the sliding bicubic surface).
 
 use crate::bezier::bernstein::bernstein_sum;
-use crate::bezier::de_casteljau::{de_casteljau_levels, de_casteljau_recursive};
+use crate::bezier::de_casteljau::de_casteljau_recursive;
 use crate::blending::functions::{lagrange4, uniform_bspline4};
 use crate::blending::opengl::{opengl_polyline, LastGroup};
 use crate::blending::window::WindowCurve;
@@ -20,42 +20,11 @@ use plotters::prelude::{RGBColor, SeriesLabelPosition};
 /// Seed 003: de Casteljau's construction at `u = 0.3, 0.5, 0.7`.
 pub fn de_casteljau_figure() -> Result<Figure> {
     let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
-    let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
-        .into_iter()
-        .map(|u| de_casteljau_recursive(&points, u))
-        .collect::<crate::Result<_>>()?;
-    let curve = xy(&curve);
-    let mut panels = Vec::new();
-    for &u in &data::CASTELJAU_U {
-        let levels = de_casteljau_levels(&points, u)?;
-        let mut panel = Panel::new(format!("u = {u}"), "x", "y")
-            .equal()
-            .legend_at(SeriesLabelPosition::LowerMiddle)
-            .with(Series::polygon("control points", &points))
-            .with(Series::line("Bézier curve", curve.clone(), C[0]).width(3));
-        for (level, pts) in levels.iter().enumerate().skip(1) {
-            let style = if pts.len() == 1 {
-                Style::Points(7)
-            } else {
-                Style::LinePoints(4)
-            };
-            let label = if pts.len() == 1 {
-                format!("P(u), level {level}")
-            } else {
-                format!("level {level}")
-            };
-            panel = panel.with(Series::line(label, xy(pts), C[level % C.len()]).styled(style));
-        }
-        panels.push(panel);
-    }
-    Ok(Figure::from(
-        Figure2d::new(
-            "de Casteljau: repeated linear interpolation (seed 003)",
-            panels,
-            (1, 3),
-        )
-        .shared_legend(),
-    ))
+    crate::report::draw::de_casteljau(
+        &points,
+        &data::CASTELJAU_U,
+        "de Casteljau: repeated linear interpolation (seed 003)",
+    )
 }
 
 /// Seed 003: the Lagrange and uniform cubic B-spline blending functions.
