@@ -5,9 +5,16 @@ text: a top-level `?` on an `Err` prints the error's text to stderr and the cell
 (measured with evcxr_jupyter 0.22.0). That text has no fixed form, so any stderr output in a
 code cell is a failure; the notebooks print nothing to stderr when healthy (compiler warnings
 included, deliberately). Names the notebook and the cell.
+
+It also fails when a figure, table or HTML view of splinelab shows up as its `Debug` text
+instead of its display (evcxr does that to the value of the first cell of a session that
+uses `?`; the notebooks settle it with one `?` in their `use` cell).
 """
 import json
 import sys
+
+# The Debug text of splinelab values that have a display of their own.
+DEBUG_DUMPS = ("Figure {", "Table {", "Html {")
 
 
 def problems(path):
@@ -30,6 +37,8 @@ def problems(path):
                 plain = "".join(out.get("data", {}).get("text/plain", []))
                 if plain.startswith("Error") or "panicked" in plain:
                     yield number, plain.strip().splitlines()[0]
+                elif len(out.get("data", {})) == 1 and plain.startswith(DEBUG_DUMPS):
+                    yield number, "shown as Debug text, not displayed: " + plain[:60]
 
 
 def self_test():
@@ -51,6 +60,9 @@ def self_test():
             notebook([{"output_type": "stream", "name": "stderr", "text": ["deliberate error\n"]}]), True),
         "warning on stderr": (notebook([{"output_type": "stream", "name": "stderr",
                                          "text": ["warning: unused variable\n"]}]), True),
+        "a figure shown as its Debug text": (
+            notebook([{"output_type": "execute_result",
+                       "data": {"text/plain": ["Figure { drawing: Scene(Figure3d { title: \"x\" }) }"]}}]), True),
         "clean": (notebook([{"output_type": "stream", "name": "stdout", "text": ["table\n"]},
                             {"output_type": "execute_result", "data": {"text/plain": ["42"]}}]), False),
     }

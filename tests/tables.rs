@@ -173,3 +173,38 @@ fn notebook_html_shows_every_row_and_escapes() {
         "escaped"
     );
 }
+
+#[cfg(feature = "report")]
+#[test]
+fn csv_is_full_precision_and_quoted() {
+    use polars::prelude::{Column, DataFrame};
+    let x = [0.1 + 0.2, std::f64::consts::PI, -1.0e-300, 6.02214076e23];
+    let df = DataFrame::new_infer_height(vec![
+        Column::new("x".into(), x.to_vec()),
+        Column::new(
+            "label".into(),
+            vec!["plain", "a, b", "say \"hi\"", "two\nlines"],
+        ),
+        Column::new("maybe".into(), vec![Some(1.5), None, Some(2.0), None]),
+    ])
+    .expect("frame");
+    let text = String::from_utf8(splinelab::report::table::csv(&df).expect("csv")).expect("utf8");
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "x,label,maybe");
+    for (k, v) in x.iter().enumerate().take(3) {
+        let first = lines[k + 1].split(',').next().expect("field");
+        assert_eq!(
+            first.parse::<f64>().expect("float"),
+            *v,
+            "round trip of {v}"
+        );
+    }
+    assert!(lines[2].contains("\"a, b\""), "{}", lines[2]);
+    assert!(lines[3].contains("\"say \"\"hi\"\"\""), "{}", lines[3]);
+    assert!(text.contains("\"two\nlines\""), "{text}");
+    assert!(
+        lines[2].ends_with(','),
+        "a missing value is empty: {}",
+        lines[2]
+    );
+}

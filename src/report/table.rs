@@ -8,7 +8,7 @@ use crate::report::files::write_atomic;
 use crate::study::{ConvergenceOrders, ConvergenceRow};
 use crate::surface::{partials_on_grid, SurfaceDerivatives};
 use nalgebra::Vector3;
-use polars::prelude::{AnyValue, Column, CsvWriter, DataFrame, SerWriter};
+use polars::prelude::{AnyValue, Column, DataFrame};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -204,19 +204,54 @@ pub fn html_table(df: &DataFrame) -> Result<String> {
     Ok(html)
 }
 
-/// Any DataFrame as CSV (full precision).
+/// Any DataFrame as CSV (RFC 4180): a header row, then one row per record; floats in the
+/// shortest form that reads back to the same `f64` (full precision), missing values empty,
+/// text quoted when it holds a comma, a quote or a line break.
+///
+/// Written here rather than by polars' CSV writer, whose `csv` feature would bring in
+/// polars-io and polars-ops (13 more crates) for this one use.
 ///
 /// # Errors
-/// [`Error::Table`] if polars cannot write it.
+/// [`Error::Table`] if polars cannot read a cell.
 pub fn csv(df: &DataFrame) -> Result<Vec<u8>> {
-    let mut out = Vec::new();
-    CsvWriter::new(&mut out)
-        .finish(&mut df.clone())
-        .map_err(|e| Error::Table {
-            name: "csv".into(),
-            message: e.to_string(),
-        })?;
-    Ok(out)
+    fn field(v: &AnyValue) -> String {
+        let text = match v {
+            AnyValue::Null => String::new(),
+            AnyValue::Float64(x) => format!("{x:?}"),
+            AnyValue::Float32(x) => format!("{x:?}"),
+            AnyValue::Boolean(b) => b.to_string(),
+            AnyValue::String(s) => s.to_string(),
+            other => other.to_string(),
+        };
+        if text.contains([',', '"', '\n', '\r']) {
+            format!("\"{}\"", text.replace('"', "\"\""))
+        } else {
+            text
+        }
+    }
+    let mut out = String::new();
+    let names: Vec<String> = df
+        .get_column_names()
+        .iter()
+        .map(|n| field(&AnyValue::String(n.as_str())))
+        .collect();
+    out.push_str(&names.join(","));
+    out.push('\n');
+    for i in 0..df.height() {
+        let row = df
+            .columns()
+            .iter()
+            .map(|c| {
+                c.get(i).map(|v| field(&v)).map_err(|e| Error::Table {
+                    name: c.name().to_string(),
+                    message: e.to_string(),
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        out.push_str(&row.join(","));
+        out.push('\n');
+    }
+    Ok(out.into_bytes())
 }
 
 /// Writes any DataFrame to `path` as CSV (through a temporary file renamed into place).
