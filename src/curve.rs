@@ -1,6 +1,6 @@
 //! Parametric curves written once, generic over the number type, with exact derivatives.
 
-use crate::error::{finite, Error, Result};
+use crate::error::Result;
 use nalgebra::SVector;
 use num_dual::{Dual2_64, Dual64, DualNum};
 
@@ -75,17 +75,4 @@ pub fn signed_curvature(d1: &SVector<f64, 2>, d2: &SVector<f64, 2>) -> f64 {
     (d1.x * d2.y - d1.y * d2.x) / d1.norm().powi(3)
 }
 
-/// Checks `t` is finite and in `[a, b]`.
-pub(crate) fn check_domain(what: &'static str, t: f64, (a, b): (f64, f64)) -> Result<f64> {
-    finite(what, t)?;
-    if a <= t && t <= b {
-        Ok(t)
-    } else {
-        Err(Error::OutOfDomain {
-            what,
-            value: t,
-            start: a,
-            end: b,
-        })
-    }
-}
+pub(crate) use crate::domain::check_domain;

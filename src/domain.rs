@@ -165,7 +165,8 @@ impl Partition {
     ///
     /// # Errors
     /// [`Error::PartitionTooShort`] for fewer than 2 nodes, [`Error::NonFinite`] for a NaN or
-    /// infinite node, [`Error::NotIncreasing`] unless the nodes strictly increase;
+    /// infinite node, [`Error::RepeatedParameter`] for two equal nodes, [`Error::NotIncreasing`]
+    /// for a decrease (the rule of [`check_nodes`], shared with every interpolation routine);
     /// [`Error::GapTooSmall`] for two nodes closer than `f64::MIN_POSITIVE`, [`Error::Overflow`]
     /// if the whole width overflows.
     pub fn try_new(nodes: Vec<f64>) -> Result<Self> {
@@ -180,21 +181,7 @@ impl Partition {
                 got: nodes.len(),
             });
         }
-        for &x in &nodes {
-            finite(what, x)?;
-        }
-        if let Some(index) = (1..nodes.len()).find(|&k| nodes[k] <= nodes[k - 1]) {
-            return Err(Error::NotIncreasing {
-                what,
-                index,
-                value: nodes[index],
-                prev: nodes[index - 1],
-            });
-        }
-        for k in 1..nodes.len() {
-            gap(what, k, nodes[k - 1], nodes[k])?;
-        }
-        gap(what, nodes.len() - 1, nodes[0], nodes[nodes.len() - 1])?;
+        check_nodes(what, &nodes)?;
         Ok(Self { nodes })
     }
 
@@ -207,8 +194,8 @@ impl Partition {
     /// # Errors
     /// [`Error::ZeroPatches`] if `n = 0`; [`Error::TooLarge`] if `n + 1` exceeds
     /// [`crate::error::MAX_ELEMENTS`]; the errors of [`Interval::try_new`] for the bounds;
-    /// [`Error::NotIncreasing`] or [`Error::GapTooSmall`] if the nodes are not distinct in
-    /// `f64`.
+    /// [`Error::RepeatedParameter`], [`Error::NotIncreasing`] or [`Error::GapTooSmall`] if the
+    /// nodes are not distinct in `f64`.
     pub fn uniform(a: f64, b: f64, n: usize) -> Result<Self> {
         if n == 0 {
             return Err(Error::ZeroPatches { what: "partition" });
@@ -258,8 +245,92 @@ impl Partition {
     /// Index `i` of the sub-interval `[uᵢ, uᵢ₊₁)` holding `x`; the right end `uₙ` belongs to
     /// the last one, and points outside the span are assigned to the nearest end piece.
     pub fn locate(&self, x: f64) -> usize {
-        let inner = &self.nodes[1..self.nodes.len() - 1];
-        inner.partition_point(|&node| node <= x)
+        locate(&self.nodes, x)
+    }
+}
+
+/// Index `i` of the interval `[xᵢ, xᵢ₊₁)` of increasing `nodes` (at least 2) holding `x`: the
+/// right end belongs to the last interval, points outside go to the nearest end interval
+/// (which the piecewise objects extrapolate), NaN to the first. The one interval search of the
+/// crate (partitions, cubic splines, piecewise linear interpolants, the batch cursor).
+pub(crate) fn locate(nodes: &[f64], x: f64) -> usize {
+    let inner = &nodes[1..nodes.len() - 1];
+    inner.partition_point(|&node| node <= x)
+}
+
+/// The one rule for nodes (partition nodes, interpolation abscissae, parameters): finite and
+/// strictly increasing, every gap at least `f64::MIN_POSITIVE` and the whole width finite;
+/// returns the widest gap `max (xᵢ₊₁ − xᵢ)` (0 below two values).
+///
+/// # Errors
+/// [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] values; [`Error::NonFinite`];
+/// [`Error::RepeatedParameter`] for two equal values; [`Error::NotIncreasing`] for a
+/// decrease; [`Error::GapTooSmall`] for two values closer than `f64::MIN_POSITIVE`;
+/// [`Error::Overflow`] if the whole width overflows.
+pub(crate) fn check_nodes(what: &'static str, x: &[f64]) -> Result<f64> {
+    crate::error::size(what, x.len())?;
+    // the common case in one branch-free pass: finite, and every gap at least MIN_POSITIVE
+    // (which implies strictly increasing); the loop below names the first failure
+    // (gaps ≥ MIN_POSITIVE and a finite total width leave no room for a NaN or an infinity:
+    // an infinite value inside makes its next gap NaN or −∞, one at an end the width infinite)
+    let (gaps_ok, widest) = x.windows(2).fold((true, 0.0_f64), |(ok, widest), w| {
+        let g = w[1] - w[0];
+        (ok & (g >= f64::MIN_POSITIVE), widest.max(g))
+    });
+    let width_ok = match x {
+        [] => true,
+        [only] => only.is_finite(),
+        [first, .., last] => (last - first).is_finite(),
+    };
+    if gaps_ok && width_ok {
+        return Ok(widest);
+    }
+    let mut prev = f64::NEG_INFINITY;
+    for (index, &v) in x.iter().enumerate() {
+        finite(what, v)?;
+        if v <= prev {
+            return Err(if v < prev {
+                Error::NotIncreasing {
+                    what,
+                    index,
+                    value: v,
+                    prev,
+                }
+            } else {
+                Error::RepeatedParameter {
+                    what,
+                    index,
+                    value: v,
+                }
+            });
+        }
+        if index > 0 {
+            gap(what, index, prev, v)?;
+        }
+        prev = v;
+    }
+    if x.len() > 1 {
+        gap(what, x.len() - 1, x[0], x[x.len() - 1])?;
+    }
+    Ok(widest)
+}
+
+/// Checks `x` is finite and in `[a, b]`: the one domain rule of curves, spline surfaces and
+/// collocation sites.
+///
+/// # Errors
+/// [`Error::NonFinite`], [`Error::OutOfDomain`].
+pub(crate) fn check_domain(what: &'static str, x: f64, (a, b): (f64, f64)) -> Result<f64> {
+    finite(what, x)?;
+    if a <= x && x <= b {
+        Ok(x)
+    } else {
+        Err(Error::OutOfDomain {
+            what,
+            value: x,
+            start: a,
+            end: b,
+        })
     }
 }
 

@@ -233,8 +233,11 @@ pub enum Error {
         /// The smallest ratio allowed ([`crate::nurbs::MIN_WEIGHT_RATIO`]).
         ratio: f64,
     },
-    /// Two interpolation abscissae (or parameters) are equal.
-    #[error("{what}: value {index} ({value}) repeats the previous one; interpolation needs distinct values")]
+    /// Two nodes that must strictly increase are equal (partition nodes, interpolation
+    /// abscissae or parameters, breakpoints).
+    #[error(
+        "{what}: value {index} ({value}) repeats the previous one; the values must be distinct"
+    )]
     RepeatedParameter {
         /// Which input.
         what: &'static str,
@@ -363,6 +366,16 @@ pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
         Ok(value)
     } else {
         Err(Error::NonFinite { what, value })
+    }
+}
+
+/// Returns `value` if it is finite and positive, else [`Error::NotPositive`]: the one rule for
+/// widths, radii and spacings.
+pub(crate) fn positive(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive { what, value })
     }
 }
 

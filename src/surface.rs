@@ -150,13 +150,7 @@ where
     }
 }
 
-fn positive(what: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::NotPositive { what, value })
-    }
-}
+use crate::error::positive;
 
 /// The torus of seed 000 §2 (Codice 1):
 /// `x = (R + r cos t) cos s`, `y = (R + r cos t) sin s`, `z = r sin t`, with `R = 2`, `r = 1`

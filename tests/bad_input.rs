@@ -397,7 +397,7 @@ fn domain_cases() -> Vec<Case> {
         case("domain::partition_repeated_node", || {
             expect_err!(
                 Partition::try_new(vec![0.0, 0.5, 0.5, 1.0]),
-                Error::NotIncreasing { index: 2, .. }
+                Error::RepeatedParameter { index: 2, .. }
             )
         }),
         case("domain::partition_decreasing", || {
@@ -436,13 +436,17 @@ fn domain_cases() -> Vec<Case> {
         case("domain::partition_uniform_unresolvable_width", || {
             expect_err!(
                 Partition::uniform(1.0, 1.0 + f64::EPSILON, 4),
-                Error::NotIncreasing { .. } | Error::GapTooSmall { .. }
+                Error::RepeatedParameter { .. }
+                    | Error::NotIncreasing { .. }
+                    | Error::GapTooSmall { .. }
             )
         }),
         case("domain::partition_uniform_subnormal_steps", || {
             expect_err!(
                 Partition::uniform(0.0, 1e-307, 1000),
-                Error::NotIncreasing { .. } | Error::GapTooSmall { .. }
+                Error::RepeatedParameter { .. }
+                    | Error::NotIncreasing { .. }
+                    | Error::GapTooSmall { .. }
             )
         }),
         case("domain::partition_uniform_width_overflows", || {
@@ -1478,7 +1482,9 @@ fn bspline_cases() -> Vec<Case> {
         case("bspline::open_uniform_unresolvable_width", || {
             expect_err!(
                 KnotVector::open_uniform(1, 10, 1.0, 1.0 + 4.0 * f64::EPSILON),
-                Error::NotIncreasing { .. } | Error::GapTooSmall { .. }
+                Error::RepeatedParameter { .. }
+                    | Error::NotIncreasing { .. }
+                    | Error::GapTooSmall { .. }
             )
         }),
         case("bspline::basis_too_few_knots", || {

@@ -22,9 +22,19 @@ fn empty_partition() {
 
 #[test]
 fn non_increasing_partition() {
+    // one rule for nodes everywhere (domain::check_nodes): a tie is a repeated value, as for
+    // interpolation abscissae, a decrease is a decrease
     assert!(matches!(
         Partition::try_new(vec![0.0, 0.5, 0.5, 1.0]),
-        Err(Error::NotIncreasing { index: 2, .. })
+        Err(Error::RepeatedParameter { index: 2, .. })
+    ));
+    assert!(matches!(
+        splinelab::CubicSpline::function(
+            &[0.0, 0.5, 0.5, 1.0],
+            &[0.0; 4],
+            splinelab::EndCondition::Natural
+        ),
+        Err(Error::RepeatedParameter { index: 2, .. })
     ));
     assert!(matches!(
         Partition::try_new(vec![0.0, 1.0, 0.9]),

@@ -160,12 +160,7 @@ impl KnotVector {
             match ends {
                 EndKnots::Clamped => Ok(vec![start; order - 1]),
                 EndKnots::Spaced(h) => {
-                    if !(h.is_finite() && h > 0.0) {
-                        return Err(Error::NotPositive {
-                            what: "end knot spacing",
-                            value: h,
-                        });
-                    }
+                    crate::error::positive("end knot spacing", h)?;
                     (1..order)
                         .map(|k| {
                             derived("outer knot a − kh or b + kh", start + sign * k as f64 * h)

@@ -76,11 +76,8 @@ impl HermitePatch {
     /// for a NaN or infinite corner datum; [`Error::CoordinateTooLarge`] for an entry of `C`
     /// (after the scaling by `Δu`, `Δv`) beyond [`crate::error::MAX_COORDINATE`].
     pub fn try_from_corners(corners: &[[Partials; 2]; 2], du: f64, dv: f64) -> Result<Self> {
-        for (what, w) in [("patch width Δu", du), ("patch width Δv", dv)] {
-            if !(w.is_finite() && w > 0.0) {
-                return Err(Error::NotPositive { what, value: w });
-            }
-        }
+        crate::error::positive("patch width Δu", du)?;
+        crate::error::positive("patch width Δv", dv)?;
         let mut c = [[Vector3::zeros(); 4]; 4];
         for (a, row) in corners.iter().enumerate() {
             for (b, p) in row.iter().enumerate() {

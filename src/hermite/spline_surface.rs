@@ -1,7 +1,7 @@
 //! Piecewise bicubic Hermite (spline) surfaces over rectangular partitions (seed 000 §5).
 
 use crate::domain::{Interval, Partition, Rect};
-use crate::error::{finite, Error, Result};
+use crate::error::{Error, Result};
 use crate::grid::Grid;
 use crate::hermite::basis::hermite_basis;
 use crate::hermite::patch::HermitePatch;
@@ -210,17 +210,7 @@ impl HermiteSpline {
 }
 
 fn check_in(what: &'static str, x: f64, span: &Interval) -> Result<f64> {
-    finite(what, x)?;
-    if span.contains(x) {
-        Ok(x)
-    } else {
-        Err(Error::OutOfDomain {
-            what,
-            value: x,
-            start: span.start(),
-            end: span.end(),
-        })
-    }
+    crate::domain::check_domain(what, x, (span.start(), span.end()))
 }
 
 /// Locates each sample's piece and evaluates the Hermite basis at its local parameter.

@@ -206,8 +206,7 @@ impl<const N: usize> CubicSpline<N> {
     /// Index `i` of the interval `[xᵢ, xᵢ₊₁)` holding `x` (the right end belongs to the last;
     /// outside points to the nearest end interval, which is extrapolated).
     fn interval(&self, x: f64) -> usize {
-        let inner = &self.x[1..self.x.len() - 1];
-        inner.partition_point(|&node| node <= x)
+        crate::domain::locate(&self.x, x)
     }
 
     /// The data of piece `i` on `[xᵢ, xᵢ₊₁]` for the moment form.
@@ -381,7 +380,7 @@ pub(crate) fn check_spline_data<const N: usize>(
             got: x.len(),
         });
     }
-    let widest = crate::interp::check_sites_gap("cubic spline abscissae", x)?;
+    let widest = crate::domain::check_nodes("cubic spline abscissae", x)?;
     finite_points("cubic spline value", y)?;
     match end {
         EndCondition::Clamped { start, end } => {

@@ -7,7 +7,7 @@ pub mod linear;
 pub mod param;
 pub mod polynomial;
 
-use crate::error::{finite, Error, Result};
+use crate::error::{Error, Result};
 use nalgebra::SVector;
 use num_dual::DualNum;
 
@@ -65,64 +65,13 @@ pub(crate) fn chord<D: DualNum<Primitive = f64> + Copy, const N: usize>(
     }
 }
 
-/// Checks interpolation abscissae (or parameters): finite and strictly increasing.
+/// Checks interpolation abscissae (or parameters): [`crate::domain::check_nodes`], the one
+/// rule for strictly increasing nodes.
 ///
 /// # Errors
-/// [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] values; [`Error::NonFinite`];
-/// [`Error::RepeatedParameter`] for two equal values; [`Error::NotIncreasing`] for a
-/// decrease; [`Error::GapTooSmall`] for two values closer than `f64::MIN_POSITIVE`;
-/// [`Error::Overflow`] if the whole width overflows.
+/// As [`crate::domain::check_nodes`].
 pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
-    check_sites_gap(what, x).map(|_| ())
-}
-
-/// [`check_sites`], returning the largest gap `max (xᵢ₊₁ − xᵢ)` (0 below two values).
-pub(crate) fn check_sites_gap(what: &'static str, x: &[f64]) -> Result<f64> {
-    crate::error::size(what, x.len())?;
-    // the common case in one branch-free pass: finite, and every gap at least MIN_POSITIVE
-    // (which implies strictly increasing); the loop below names the first failure
-    // (gaps ≥ MIN_POSITIVE and a finite total width leave no room for a NaN or an infinity:
-    // an infinite value inside makes its next gap NaN or −∞, one at an end the width infinite)
-    let (gaps_ok, widest) = x.windows(2).fold((true, 0.0_f64), |(ok, widest), w| {
-        let g = w[1] - w[0];
-        (ok & (g >= f64::MIN_POSITIVE), widest.max(g))
-    });
-    let width_ok = match x {
-        [] => true,
-        [only] => only.is_finite(),
-        [first, .., last] => (last - first).is_finite(),
-    };
-    if gaps_ok && width_ok {
-        return Ok(widest);
-    }
-    let mut prev = f64::NEG_INFINITY;
-    for (index, &v) in x.iter().enumerate() {
-        finite(what, v)?;
-        if v <= prev {
-            return Err(if v < prev {
-                Error::NotIncreasing {
-                    what,
-                    index,
-                    value: v,
-                    prev,
-                }
-            } else {
-                Error::RepeatedParameter {
-                    what,
-                    index,
-                    value: v,
-                }
-            });
-        }
-        if index > 0 {
-            crate::domain::gap(what, index, prev, v)?;
-        }
-        prev = v;
-    }
-    if x.len() > 1 {
-        crate::domain::gap(what, x.len() - 1, x[0], x[x.len() - 1])?;
-    }
-    Ok(widest)
+    crate::domain::check_nodes(what, x).map(|_| ())
 }
 
 /// Finds the interval `[xᵢ, xᵢ₊₁)` of a sequence of points, starting at the previous one, so
@@ -149,8 +98,7 @@ impl<'a> IntervalCursor<'a> {
             if i < last && self.nodes[i + 1] <= x && (i + 1 == last || x < self.nodes[i + 2]) {
                 self.i = i + 1;
             } else {
-                let inner = &self.nodes[1..self.nodes.len() - 1];
-                self.i = inner.partition_point(|&node| node <= x);
+                self.i = crate::domain::locate(self.nodes, x);
             }
         }
         self.i

@@ -422,8 +422,9 @@ impl Plot2d {
         self.with(Series::line(label, xy(points), color).styled(Style::Points(5)))
     }
 
-    /// Adds the unit-free tangent `C′(t)` at each parameter as a short segment of length
-    /// `length · ‖C′(t)‖` starting at `C(t)`, with a dot at the foot.
+    /// Adds the tangent `C′(t)` at each parameter as an arrow from `C(t)` to
+    /// `C(t) + length · C′(t)`, with a dot at the foot (the head is drawn in data units, so it
+    /// is true to shape on an [`Plot2d::equal`] panel).
     pub fn tangents<C: ParametricCurve<2> + ?Sized>(
         mut self,
         curve: &C,
@@ -433,11 +434,18 @@ impl Plot2d {
         for (k, &t) in params.iter().enumerate() {
             let [p, d, _] = curve.derivatives2(t);
             let q = p + d * length;
-            let s = Series::line("tangent C′(t)", vec![(p.x, p.y), (q.x, q.y)], INK)
-                .styled(Style::LinePoints(3));
+            let back = (p - q) * 0.18;
+            let side = Vector2::new(-back.y, back.x) * 0.5;
+            let (l, r) = (q + back + side, q + back - side);
+            let arrow = vec![(p.x, p.y), (q.x, q.y), (l.x, l.y), (q.x, q.y), (r.x, r.y)];
+            let shaft = Series::line("tangent C′(t)", arrow, INK).width(2);
+            let foot = Series::line("", vec![(p.x, p.y)], INK)
+                .styled(Style::Points(4))
+                .unlabeled();
             self.panel
                 .series
-                .push(if k == 0 { s } else { s.unlabeled() });
+                .push(if k == 0 { shaft } else { shaft.unlabeled() });
+            self.panel.series.push(foot);
         }
         self
     }
@@ -599,6 +607,28 @@ pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<
         .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
         .collect::<crate::Result<_>>()?;
     let curve = xy(&curve);
+    // the layout whose panels show the shape largest at equal axes (panel sizes estimated
+    // from the figure size less the title, legend, axis labels and margins)
+    let (lo, hi) = points.iter().fold(
+        (
+            Vector2::repeat(f64::INFINITY),
+            Vector2::repeat(f64::NEG_INFINITY),
+        ),
+        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+    );
+    let extent = (hi - lo).map(|e| if e.is_finite() && e > 0.0 { e } else { 1.0 });
+    let n = us.len().clamp(1, 6);
+    let (fw, fh) = crate::report::style::FIGURE_SIZE;
+    let scale = |(rows, cols): (usize, usize)| {
+        let w = f64::from(fw) / cols as f64 - 90.0;
+        let h = (f64::from(fh) - 90.0) / rows as f64 - 100.0;
+        (w / extent.x).min(h / extent.y)
+    };
+    let layout = [(1, n), (n, 1), (2, n.div_ceil(2)), (n.div_ceil(2), 2)]
+        .into_iter()
+        .filter(|&(r, c)| r * c >= n)
+        .max_by(|&a, &b| scale(a).total_cmp(&scale(b)))
+        .unwrap_or((1, n));
     let mut panels = Vec::new();
     for &u in us.iter().take(6) {
         let levels = crate::bezier::de_casteljau::de_casteljau_levels(points, u)?;
@@ -626,6 +656,6 @@ pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<
         panels.push(panel);
     }
     Ok(Figure::from(
-        Figure2d::new(title, panels, (1, us.len().clamp(1, 6))).shared_legend(),
+        Figure2d::new(title, panels, layout).shared_legend(),
     ))
 }

@@ -425,8 +425,14 @@ fn axis_label(log: bool, v: f64) -> String {
 fn power_label(e: f64) -> String {
     let v = 10f64.powf(e);
     if (-3.0..=4.0).contains(&e) {
-        let s = format!("{v:.3}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
+        // three significant digits: 0.0316, 0.316, 3.16, 31.6
+        let decimals = (2.0 - e.floor()).max(0.0) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
     } else {
         format!("{v:.0e}")
     }

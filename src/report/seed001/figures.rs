@@ -217,8 +217,9 @@ pub fn runge_figure() -> Result<Figure> {
     let mut bottom = Panel::new(
         "max |p − f| on [−5, 5] vs degree",
         "degree",
-        "log₁₀ max error",
+        "max error (log scale)",
     )
+    .log(false, true)
     .legend_at(SeriesLabelPosition::UpperLeft);
     let rows = data::runge_rows()?;
     for (k, family) in [NodeFamily::Equispaced, NodeFamily::Chebyshev]
@@ -227,7 +228,7 @@ pub fn runge_figure() -> Result<Figure> {
     {
         let pts = rows
             .iter()
-            .map(|r| (r.degree as f64, r.error(family).log10()))
+            .map(|r| (r.degree as f64, r.error(family)))
             .collect();
         bottom = bottom.with(
             Series::line(format!("{} nodes", family.label()), pts, C[k])
@@ -270,9 +271,10 @@ pub fn cubic_spline_ends() -> Result<Figure> {
     let mut top = Panel::new("7 samples of sin x on [0, 2π]", "x", "s(x)")
         .legend_at(SeriesLabelPosition::LowerLeft)
         .with(Series::line("sin x", sampled(a, b, |t| (t, t.sin())), BLACK).width(3));
-    // the error vanishes at the nodes; 1e-6 floors the logarithm there
-    let log_error = |e: f64| e.abs().max(1e-6).log10();
-    let mut bottom = Panel::new("error |s(x) − sin x|", "x", "log₁₀ |error|")
+    // the error vanishes at the nodes; 1e-6 floors it there for the log axis
+    let floored = |e: f64| e.abs().max(1e-6);
+    let mut bottom = Panel::new("error |s(x) − sin x|", "x", "|error| (log scale)")
+        .log(false, true)
         .legend_at(SeriesLabelPosition::LowerLeft);
     let linear =
         PiecewiseLinear::try_new(&x, &y.iter().map(|&v| Vector1::new(v)).collect::<Vec<_>>())?;
@@ -298,7 +300,7 @@ pub fn cubic_spline_ends() -> Result<Figure> {
         bottom = bottom.with(
             Series::line(
                 end.label(),
-                sampled(a, b, |t| (t, log_error(s.value(t) - t.sin()))),
+                sampled(a, b, |t| (t, floored(s.value(t) - t.sin()))),
                 C[k],
             )
             .styled(style),
