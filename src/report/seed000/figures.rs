@@ -13,9 +13,8 @@ use crate::report::draw::{self, Plot3d};
 use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::render3d::View;
-use crate::report::seed000::tables::CONVERGENCE_NS;
 use crate::report::style::{codice14_color, CODICE14_COLORS, FACE_ALPHA, PATCH_PALETTE};
-use crate::study::{convergence, REPORT_PREC};
+use crate::study::REPORT_PREC;
 use crate::surface::Torus;
 use plotters::style::RGBColor;
 use std::f64::consts::TAU;
@@ -208,14 +207,8 @@ pub fn fig8() -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn convergence_figure() -> Result<Figure> {
-    let rows = convergence(
-        &Torus::default(),
-        &Rect::unit(),
-        &CONVERGENCE_NS,
-        REPORT_PREC,
-    )?;
     Ok(draw::convergence(
-        &rows,
+        &crate::report::seed000::tables::torus_convergence()?,
         "Convergence: max-abs error vs patch size h, n × n patches of the torus on [0,1]²",
     ))
 }

@@ -176,18 +176,27 @@ pub fn equivalence() -> Result<Table> {
 /// Patch counts of the convergence study.
 pub const CONVERGENCE_NS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];
 
+/// The convergence study of the torus on `[0, 1]²` behind the convergence table and figure:
+/// `n × n` patches for `n` in [`CONVERGENCE_NS`], [`REPORT_PREC`] samples per patch side.
+///
+/// # Errors
+/// Never in practice (the data are fixed and valid).
+pub fn torus_convergence() -> Result<Vec<crate::study::ConvergenceRow>> {
+    Ok(convergence(
+        &Torus::default(),
+        &Rect::unit(),
+        &CONVERGENCE_NS,
+        REPORT_PREC,
+    )?)
+}
+
 /// Convergence of the torus's Hermite spline on `[0, 1]²`, `n × n` patches,
 /// `n = 1, 2, 4, …, 64`, with observed orders between rows (expected: 4).
 ///
 /// # Errors
 /// Only on an internal polars failure ([`crate::report::Error::Table`]).
 pub fn convergence_table() -> Result<Table> {
-    let rows = convergence(
-        &Torus::default(),
-        &Rect::unit(),
-        &CONVERGENCE_NS,
-        REPORT_PREC,
-    )?;
+    let rows = torus_convergence()?;
     Ok(table::convergence(
         "convergence",
         "Convergence of the bicubic Hermite spline of the torus on [0,1]², n × n patches",
