@@ -36,7 +36,7 @@ pub trait ParametricCurve<const N: usize> {
     /// `C(t)`, checked.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::OutOfDomain`] outside the
+    /// [`crate::Error::NonFinite`] for a NaN or infinite `t`; [`crate::Error::OutOfDomain`] outside the
     /// domain (both ends included).
     fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
         check_domain("curve parameter", t, self.domain())?;
@@ -52,7 +52,7 @@ pub trait ParametricCurve<const N: usize> {
     /// polyline for drawing).
     ///
     /// # Errors
-    /// [`Error::TooFewSamples`] below 2.
+    /// [`crate::Error::TooFewSamples`] below 2.
     fn polyline(&self, samples: usize) -> Result<Vec<SVector<f64, N>>> {
         let (a, b) = self.domain();
         crate::error::samples("polyline samples", samples)?;

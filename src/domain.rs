@@ -166,7 +166,7 @@ impl Partition {
     /// # Errors
     /// [`Error::PartitionTooShort`] for fewer than 2 nodes, [`Error::NonFinite`] for a NaN or
     /// infinite node, [`Error::RepeatedParameter`] for two equal nodes, [`Error::NotIncreasing`]
-    /// for a decrease (the rule of [`check_nodes`], shared with every interpolation routine);
+    /// for a decrease (the rule of `domain::check_nodes`, shared with every interpolation routine);
     /// [`Error::GapTooSmall`] for two nodes closer than `f64::MIN_POSITIVE`, [`Error::Overflow`]
     /// if the whole width overflows.
     pub fn try_new(nodes: Vec<f64>) -> Result<Self> {

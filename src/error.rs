@@ -7,7 +7,7 @@
 //!   must every quantity derived from them that the object relies on: interval widths, knot
 //!   gaps and their reciprocals, chord lengths and their sums, nodes of a uniform partition,
 //!   corner data of a surface, polynomial coefficients, NURBS weight ratios. A failure is a
-//!   typed [`Error`] that names the real cause.
+//!   typed [`Error`](enum@Error) that names the real cause.
 //! - **An `Ok` value is finite and satisfies its defining property**: an interpolant
 //!   reproduces its data (routes that solve a possibly ill-conditioned system check their
 //!   residual and return [`Error::IllConditioned`] when `f64` cannot deliver it; the cubic

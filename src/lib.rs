@@ -22,7 +22,7 @@
 //!   procedures, the sliding bicubic surface.
 //! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
 //! - [`report`] (feature `report`, on by default): figures and tables of the user's own
-//!   objects ([`report::draw`], [`report::table`]), the seeds' outputs built with them, output
+//!   objects ([`report::draw`], [`report::table`](mod@report::table)), the seeds' outputs built with them, output
 //!   files and benchmarks used by the `splinelab` CLI and the notebooks.
 //!
 //! # Features

@@ -186,7 +186,7 @@ impl<const N: usize> NurbsCurve<N> {
     /// The power forms are used on a span only where the projection keeps their accuracy:
     /// with `w_min` the smallest (scaled) weight of the span, `Σ wᵢNᵢ ≥ w_min` there, and the
     /// error of `X / W` is at most `6ε (S_X + ‖P‖ S_W) / w_min` for the sizes `S` of the two
-    /// power forms ([`horner::size`]); the span takes the fast path only if
+    /// power forms (`horner::size`); the span takes the fast path only if
     /// `S_W ≤ TAYLOR_GROWTH · w_min` (so `W` keeps its relative accuracy and stays positive)
     /// and `S_X ≤ TAYLOR_GROWTH · w_min · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send their
     /// spans to point-by-point evaluation as [`ParametricCurve::eval`].

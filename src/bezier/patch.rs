@@ -45,7 +45,7 @@ impl BezierPatch {
 
     /// The Bézier form of a Hermite patch (seed 000 §4, Codice 7–8, corrected).
     ///
-    /// With `A` the 1-D map of [`hermite_to_bezier_1d`] (`b = A h`), the net is `M = A C Aᵀ`:
+    /// With `A` the 1-D map of `hermite_to_bezier_1d` (`b = A h`), the net is `M = A C Aᵀ`:
     /// `A` is applied to every column of `C` (the s direction) and then to every row (t).
     /// Written out, with `C` 1-based as in the report:
     ///

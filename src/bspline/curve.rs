@@ -11,8 +11,8 @@ use num_dual::DualNum;
 /// `[t_p, t_{n+1}]` of its basis (seed 001; *The NURBS Book* A3.1).
 ///
 /// Generic over the dimension (`N = 1` for spline functions, 2 and 3 for curves) and, in
-/// [`BSplineCurve::eval`], over the number type: at `t + ε` ([`Dual64`]) it gives the tangent,
-/// at a second-order dual number ([`Dual2_64`]) the second derivative, both exact.
+/// [`BSplineCurve::eval`], over the number type: at `t + ε` ([`num_dual::Dual64`]) it gives the tangent,
+/// at a second-order dual number ([`num_dual::Dual2_64`]) the second derivative, both exact.
 ///
 /// The curve is `C^{p−mⱼ}` at a knot of multiplicity `mⱼ` (the slides' `C^{m−mⱼ−1}` with order
 /// `m = p + 1`); moving `Pᵢ` changes it only on `[tᵢ, t_{i+p+1})`.
@@ -111,7 +111,7 @@ impl<const N: usize> BSplineCurve<N> {
     /// The power form is taken in the scaled variable `s = (t − t_ℓ)/w` of each span (`w` its
     /// width), so its coefficients are of the size of the control points however narrow or
     /// wide the span, and it is used only where it is as accurate as the basis form: finite
-    /// coefficients with `Σₖ ‖c̃ₖ‖ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` (see [`horner::safe`]);
+    /// coefficients with `Σₖ ‖c̃ₖ‖ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` (see `horner::safe`);
     /// elsewhere the span is evaluated point by point as [`ParametricCurve::eval`] does.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
         let p = self.basis.degree();

@@ -260,7 +260,7 @@ impl<const N: usize> CubicSpline<N> {
     }
 
     /// Evaluates at every `x` of `xs` into `out` (cleared first); see
-    /// [`CubicSpline::extend_values`] for the cost.
+    /// `CubicSpline::extend_values` for the cost.
     pub fn eval_many(&self, xs: &[f64], out: &mut Vec<SVector<f64, N>>) {
         out.clear();
         self.extend_values(xs, out, |v| v);

@@ -260,7 +260,7 @@ impl Lagrange {
 
     /// `p(t) = Σ yᵢ ℓᵢ(t)`: the second barycentric form; where its denominator `Σ λᵢ` has
     /// cancelled by more than 8 digits (extreme node geometry, where the second form is not
-    /// stable) the first form instead ([`Lagrange::first_form`], backward stable, Higham
+    /// stable) the first form instead (`Lagrange::first_form`, backward stable, Higham
     /// 2004).
     pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
         let l = self.lambdas(t);

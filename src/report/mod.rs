@@ -5,7 +5,7 @@
 //!   outlines, corner points, derivative arrows, control nets), curves in the plane and in
 //!   space with control polygons and tangents, bases, error maps and convergence plots for
 //!   any surface and partition, line and log plots of any series. Each returns a [`Figure`].
-//! - [`table`]: a [`Table`] (DataFrame, title, notes) from any tabulation, error study or
+//! - [`table`](mod@table): a [`Table`] (DataFrame, title, notes) from any tabulation, error study or
 //!   convergence study; Markdown, HTML and CSV for any DataFrame.
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas.
