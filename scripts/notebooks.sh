@@ -7,7 +7,7 @@
 # Each executed notebook is also written as HTML with its figures (out/notebooks/<name>.html).
 #
 # usage: scripts/notebooks.sh [NOTEBOOK.ipynb ...]   (default: notebooks/[0-9][0-9]-*.ipynb)
-#        scripts/notebooks.sh --lab                  JupyterLab on notebooks/ with the same kernel,
+#        scripts/notebooks.sh --lab [LAB OPTIONS]    JupyterLab on notebooks/ with the same kernel,
 #                                                    environment and compile cache (variables
 #                                                    survive a panic there, unlike the headless run)
 # env:   SPLINELAB_STATE  where the venv and compile caches are kept (default ~/.cache/splinelab)
@@ -67,7 +67,9 @@ if [ "${1:-}" = "--lab" ]; then
         "$venv/bin/pip" install --quiet --disable-pip-version-check "jupyterlab==$JUPYTERLAB_VERSION"
     fi
     export EVCXR_CONFIG_DIR="$root/scripts/evcxr-lab"
-    exec "$venv/bin/jupyter-lab" --notebook-dir="$root/notebooks"
+    root_flag=()
+    [ "$(id -u)" = 0 ] && root_flag=(--allow-root)   # containers often run as root
+    exec "$venv/bin/jupyter-lab" --notebook-dir="$root/notebooks" "${root_flag[@]}" "${@:2}"
 fi
 
 # 5. Execute.

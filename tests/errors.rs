@@ -177,3 +177,18 @@ fn errors_read_well() {
         "partition: nodes must be strictly increasing, but node 2 (0.9) <= node 1 (1)"
     );
 }
+
+#[test]
+fn debug_shows_the_message_so_notebook_cells_read_well() {
+    // `.expect(…)`, `unwrap` and evcxr's top-level `?` print an error with Debug
+    let e = Partition::try_new(vec![0.0, 0.5, 0.5, 1.0]).unwrap_err();
+    assert_eq!(format!("{e:?}"), format!("{e}"));
+    assert!(!format!("{e:?}").contains('{'), "no field dump: {e:?}");
+    #[cfg(feature = "report")]
+    {
+        let r = splinelab::report::figure("no-such-figure").unwrap_err();
+        assert_eq!(format!("{r:?}"), format!("{r}"));
+        let wrapped = splinelab::report::Error::from(e.clone());
+        assert_eq!(format!("{wrapped:?}"), format!("{e}"), "the core message, unwrapped");
+    }
+}
