@@ -189,6 +189,10 @@ fn debug_shows_the_message_so_notebook_cells_read_well() {
         let r = splinelab::report::figure("no-such-figure").unwrap_err();
         assert_eq!(format!("{r:?}"), format!("{r}"));
         let wrapped = splinelab::report::Error::from(e.clone());
-        assert_eq!(format!("{wrapped:?}"), format!("{e}"), "the core message, unwrapped");
+        assert_eq!(
+            format!("{wrapped:?}"),
+            format!("{e}"),
+            "the core message, unwrapped"
+        );
     }
 }
