@@ -313,6 +313,28 @@ fn curves_bases_and_series_are_drawn_from_data() {
             fig.title()
         );
     }
+    // a space curve with its control polygon, points and tangent arrows
+    let helix: Vec<Vector3<f64>> = (0..8)
+        .map(|i| {
+            let a = i as f64 * 0.9;
+            Vector3::new(a.cos(), a.sin(), 0.3 * a)
+        })
+        .collect();
+    let knots = KnotVector::open_uniform(3, helix.len(), 0.0, 1.0).expect("knots");
+    let basis = BSplineBasis::try_new(knots, 3).expect("basis");
+    let space = BSplineCurve::try_new(basis, helix.clone()).expect("curve");
+    let fig = Plot3d::new("a space curve")
+        .polyline(&helix, RGBColor(120, 120, 120), "control polygon")
+        .points(&helix, RGBColor(0, 114, 178), "control points")
+        .curve(&space, RGBColor(213, 94, 0), "cubic B-spline")
+        .expect("curve")
+        .tangents(&space, &[0.2, 0.5, 0.8], 0.3)
+        .figure();
+    let share = ink(pixels(&fig.to_rgb().expect("draws")));
+    assert!(
+        share > MIN_INK_PLANE,
+        "space curve nearly blank: {share:.4}"
+    );
 }
 
 #[test]

@@ -339,6 +339,27 @@ impl Plot3d {
         Ok(self.polyline(&points, color, label))
     }
 
+    /// Adds the tangent `C′(t)` of a space curve at each parameter as an arrow from `C(t)` to
+    /// `C(t) + length · C′(t)`.
+    pub fn tangents<C: ParametricCurve<3> + ?Sized>(
+        mut self,
+        curve: &C,
+        params: &[f64],
+        length: f64,
+    ) -> Self {
+        for &t in params {
+            let [p, d, _] = curve.derivatives2(t);
+            let q = p + d * length;
+            if p.iter().chain(q.iter()).all(|x| x.is_finite()) {
+                self.scene.segments.push(Segment::arrow(p, q, INK, 2));
+            }
+        }
+        if !params.is_empty() {
+            self.scene.legend.push(("tangent C′(t)".into(), INK));
+        }
+        self
+    }
+
     /// The scene as it stands (to add raw segments or markers).
     pub fn scene_mut(&mut self) -> &mut Scene {
         &mut self.scene
