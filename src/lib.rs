@@ -79,6 +79,7 @@ pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::patch::HermitePatch;
 pub use hermite::spline_surface::HermiteSpline;
+pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;
 pub use interp::param::Parametrization;
