@@ -77,6 +77,7 @@ pub use domain::{Interval, Partition, Rect};
 pub use error::{Error, Result};
 pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
+pub use hermite::curve::HermiteCurve;
 pub use hermite::patch::HermitePatch;
 pub use hermite::spline_surface::HermiteSpline;
 pub use interp::cardinal::{cardinal_matrix, CardinalSpline};

@@ -230,3 +230,45 @@ fn bad_input_is_a_typed_error() {
     let s = CardinalSpline::try_new(same, 0.5).expect("degenerate but valid");
     assert!(s.point(1.3).iter().all(|x| x.is_finite()));
 }
+
+#[test]
+fn the_hermite_base_reproduces_cubics_on_uneven_knots() {
+    // Hermite data of a cubic space curve: the piecewise cubic is the cubic itself
+    use nalgebra::Vector3;
+    use splinelab::HermiteCurve;
+    let c = |u: f64| Vector3::new(u * u * u - 2.0 * u, 0.5 * u * u + 1.0, 3.0 - u);
+    let dc = |u: f64| Vector3::new(3.0 * u * u - 2.0, u, -1.0);
+    let knots = vec![-1.0, -0.2, 0.05, 1.3, 2.0];
+    let curve = HermiteCurve::try_new(
+        knots.clone(),
+        knots.iter().map(|&u| c(u)).collect(),
+        knots.iter().map(|&u| dc(u)).collect(),
+    )
+    .expect("valid");
+    for j in 0..=300 {
+        let u = -1.0 + 3.0 * j as f64 / 300.0;
+        assert!((curve.point(u) - c(u)).amax() < 1e-13, "value at {u}");
+        assert!(
+            (curve.derivative(u) - dc(u)).amax() < 1e-12,
+            "tangent at {u}"
+        );
+    }
+    // bad input: lengths, knots, non-finite data
+    let pts: Vec<Vector3<f64>> = knots.iter().map(|&u| c(u)).collect();
+    let tan: Vec<Vector3<f64>> = knots.iter().map(|&u| dc(u)).collect();
+    assert!(matches!(
+        HermiteCurve::try_new(knots[..4].to_vec(), pts.clone(), tan.clone()),
+        Err(Error::CountMismatch { .. })
+    ));
+    assert!(matches!(
+        HermiteCurve::try_new(vec![0.0, 1.0, 1.0, 2.0, 3.0], pts.clone(), tan.clone()),
+        Err(Error::RepeatedParameter { index: 2, .. })
+    ));
+    let mut bad = tan.clone();
+    bad[1].x = f64::INFINITY;
+    assert!(HermiteCurve::try_new(knots.clone(), pts.clone(), bad).is_err());
+    assert!(matches!(
+        HermiteCurve::try_new(vec![0.0], pts[..1].to_vec(), tan[..1].to_vec()),
+        Err(Error::TooFewPoints { .. })
+    ));
+}

@@ -23,7 +23,7 @@
 
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
-use crate::hermite::basis::hermite_basis;
+use crate::hermite::curve::HermiteCurve;
 use nalgebra::{Matrix4, SVector};
 use num_dual::DualNum;
 
@@ -33,6 +33,8 @@ use num_dual::DualNum;
 pub struct CardinalSpline<const N: usize> {
     points: Vec<SVector<f64, N>>,
     a: f64,
+    /// The inner points `P₁ … P_{m−2}` at knots `0, 1, …, m − 3` with Clark's tangents.
+    hermite: HermiteCurve<N>,
 }
 
 /// `M_c(a)`, the matrix of the cardinal spline in the power basis `[t³ t² t 1]` acting on
@@ -80,7 +82,10 @@ impl<const N: usize> CardinalSpline<N> {
         crate::error::positive("cardinal spline parameter a", a)?;
         let tangents: Vec<SVector<f64, N>> = points.windows(3).map(|w| (w[2] - w[0]) * a).collect();
         finite_points("cardinal spline tangent a (Pᵢ₊₁ − Pᵢ₋₁)", &tangents)?;
-        Ok(Self { points, a })
+        let inner = points[1..points.len() - 1].to_vec();
+        let knots = (0..inner.len()).map(|k| k as f64).collect();
+        let hermite = HermiteCurve::try_new(knots, inner, tangents)?;
+        Ok(Self { points, a, hermite })
     }
 
     /// The closed cardinal spline through `points`, closed as seed 004 closes it: the first
@@ -119,30 +124,18 @@ impl<const N: usize> CardinalSpline<N> {
         self.points.len() - 3
     }
 
-    /// The segment `k` of global `u` (the right end belongs to the last
-    /// segment; outside the domain the end segments extrapolate).
-    fn locate(&self, u: f64) -> usize {
-        let last = self.segments() - 1;
-        if u.is_nan() || u < 1.0 {
-            0
-        } else {
-            (u.floor() as usize).min(last)
-        }
+    /// The Hermite curve it is: the inner points at knots `0, 1, …` with Clark's tangents.
+    pub fn hermite(&self) -> &HermiteCurve<N> {
+        &self.hermite
     }
 }
 
 impl<const N: usize> ParametricCurve<N> for CardinalSpline<N> {
     /// `C(u)` on segment `k = ⌊u⌋`, `t = u − k`: the Hermite form
-    /// `H₀(t) Pᵢ + H₁(t) P′ᵢ + H₂(t) P′ᵢ₊₁ + H₃(t) Pᵢ₊₁` with `i = k + 1`.
+    /// `H₀(t) Pᵢ + H₁(t) P′ᵢ + H₂(t) P′ᵢ₊₁ + H₃(t) Pᵢ₊₁` with `i = k + 1` ([`HermiteCurve`]
+    /// on unit knots).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> SVector<D, N> {
-        let k = self.locate(u.re());
-        let t = u - k as f64;
-        let [h0, h1, h2, h3] = hermite_basis(t);
-        let p = &self.points[k..k + 4];
-        let d1 = (p[2] - p[0]) * self.a;
-        let d2 = (p[3] - p[1]) * self.a;
-        let lift = |v: &SVector<f64, N>| v.map(D::from);
-        lift(&p[1]) * h0 + lift(&d1) * h1 + lift(&d2) * h2 + lift(&p[2]) * h3
+        self.hermite.eval(u)
     }
 
     /// `[0, m − 3]`.
