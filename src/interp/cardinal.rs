@@ -81,9 +81,9 @@ impl<const N: usize> CardinalSpline<N> {
         finite_points("cardinal spline point", &points)?;
         crate::error::positive("cardinal spline parameter a", a)?;
         let tangents: Vec<SVector<f64, N>> = points.windows(3).map(|w| (w[2] - w[0]) * a).collect();
-        finite_points("cardinal spline tangent a (Pᵢ₊₁ − Pᵢ₋₁)", &tangents)?;
         let inner = points[1..points.len() - 1].to_vec();
         let knots = (0..inner.len()).map(|k| k as f64).collect();
+        // on unit knots the Hermite base checks the tangents a (Pᵢ₊₁ − Pᵢ₋₁) themselves
         let hermite = HermiteCurve::try_new(knots, inner, tangents)?;
         Ok(Self { points, a, hermite })
     }

@@ -417,6 +417,12 @@ impl Plot2d {
         self
     }
 
+    /// The legend at `pos` (default: upper right).
+    pub fn legend_at(mut self, pos: plotters::prelude::SeriesLabelPosition) -> Self {
+        self.panel = self.panel.legend_at(pos);
+        self
+    }
+
     /// Adds a series as it is (any style and colour).
     pub fn with(mut self, series: Series) -> Self {
         self.panel.series.push(series);
@@ -607,13 +613,8 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
             );
         }
     }
-    let mut fig = plot.figure();
-    if let crate::report::figure::Drawing::Plane(f) = &mut fig.drawing {
-        for p in &mut f.panels {
-            p.legend = plotters::prelude::SeriesLabelPosition::UpperLeft;
-        }
-    }
-    fig
+    plot.legend_at(plotters::prelude::SeriesLabelPosition::UpperLeft)
+        .figure()
 }
 
 /// de Casteljau's construction for any control points, one panel per parameter `u` (at most
