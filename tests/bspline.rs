@@ -96,6 +96,24 @@ fn right_end_of_the_domain_evaluates_correctly() {
     // clamped: the last function is 1 at b, so a curve ends at its last control point
     let basis = BSplineBasis::new(KnotVector::new(data::LOCALITY_KNOTS.to_vec()), 3);
     assert_eq!(basis.all(1.0)[6], 1.0);
+    // the right end is a value, not a bit pattern: b = −0.0 evaluated at t = +0.0 (and the
+    // reverse) is the right end for both evaluators (found by random_input in CI)
+    for (end, t) in [(-0.0, 0.0), (0.0, -0.0)] {
+        let basis = BSplineBasis::new(
+            KnotVector::new(vec![-1.0, -1.0, -1.0, -1.0, end, end, end, end]),
+            3,
+        );
+        let fast = basis.all(t);
+        for i in 0..4 {
+            let expected = if i == 3 { 1.0 } else { 0.0 };
+            assert_eq!(fast[i], expected, "one-pass N{i}({t:?}), b = {end:?}");
+            assert_eq!(
+                basis.cox_de_boor(i, 3, t),
+                expected,
+                "Cox–de Boor N{i}({t:?}), b = {end:?}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -300,7 +300,7 @@ impl BSplineBasis {
         // rule would give all zeros; where b is repeated, an empty span).
         let mut level: Vec<D> = (i..=i + q)
             .map(|m| {
-                let one = if x.total_cmp(&b).is_eq() {
+                let one = if x == b {
                     m == end_span
                 } else {
                     k[m] <= x && x < k[m + 1]
