@@ -246,11 +246,28 @@ pub enum Error {
         /// The value.
         value: f64,
     },
-    /// Two consecutive points coincide, so a distance-based parametrization cannot separate them.
-    #[error("point {index} coincides with point {prev_index}: chord-based parameters would repeat", prev_index = index - 1)]
+    /// Two consecutive points coincide (a chord-based parametrization could not separate them;
+    /// an Angular piece would have no chord).
+    #[error("point {index} coincides with point {prev_index}: consecutive points must be distinct", prev_index = index - 1)]
     RepeatedPoint {
         /// Index of the second of the two points.
         index: usize,
+    },
+    /// A point returns to the one before its predecessor, `Pᵢ₊₁ = Pᵢ₋₁`: no circle passes through
+    /// the three, so the Angular spline has no tangent at `Pᵢ`.
+    #[error("point {next} returns to point {prev}: no circle passes through points {prev}, {index}, {next}", prev = index - 1, next = index + 1)]
+    ReversedPoints {
+        /// Index of the middle point `i`.
+        index: usize,
+    },
+    /// A construction has no valid result for these inputs (a guide for a tangent pointing away
+    /// from the next point, an inflection rule whose split is unusable).
+    #[error("{what}: {reason}")]
+    Degenerate {
+        /// Which construction.
+        what: &'static str,
+        /// Why.
+        reason: &'static str,
     },
     /// Periodic (cyclic) end conditions need data whose first and last values coincide.
     #[error(

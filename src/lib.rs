@@ -80,6 +80,10 @@ pub use hermite::basis::hermite_basis;
 pub use hermite::curve::HermiteCurve;
 pub use hermite::patch::HermitePatch;
 pub use hermite::spline_surface::HermiteSpline;
+pub use interp::angular::{
+    guide_point, AngularSpline, HermiteMidpoint, InflectionPoint, InflectionRule, MirrorMidpoint,
+    PieceKind,
+};
 pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;

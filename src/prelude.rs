@@ -22,10 +22,10 @@ pub use nalgebra::{DMatrix, Matrix4, SVector, Vector1, Vector2, Vector3};
 pub use num_dual::{Dual2_64, Dual3_64, Dual64, DualNum, HyperDual64};
 
 pub use crate::{
-    BSplineBasis, BSplineCurve, BezierPatch, CubicSpline, EndCondition, Error, FnSurface,
-    HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve,
-    ParametricSurface, Parametrization, Partition, PiecewiseLinear, Rect, Result,
-    SurfaceDerivatives, Torus,
+    AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline, CubicSpline,
+    EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSpline, Interval,
+    KnotVector, Lagrange, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
+    Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
 };
 
 #[cfg(feature = "report")]

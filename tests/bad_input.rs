@@ -62,11 +62,12 @@ use splinelab::metrics::ErrorAccumulator;
 use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
-    de_casteljau_recursive, de_casteljau_surface, hermite_basis, matlab_norm, partials_on_grid,
-    partials_on_grid_into, printed_setbval, runge, spline_errors, tabulate, uniform_spline_errors,
-    BSplineBasis, BSplineCurve, BezierPatch, Blending, CubicSpline, EndCondition, EndKnots, Error,
-    ExpSurface, FnSurface, Grid, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange,
-    NodeFamily, NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation,
+    de_casteljau_recursive, de_casteljau_surface, guide_point, hermite_basis, matlab_norm,
+    partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors, tabulate,
+    uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
+    CardinalSpline, CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface, Grid,
+    HermiteCurve, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NodeFamily,
+    NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation,
     PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -4539,6 +4540,292 @@ const RGB_BLACK: plotters::style::RGBColor = plotters::style::RGBColor(0, 0, 0);
 // The tests
 // ---------------------------------------------------------------------------------------------
 
+// ---------------------------------------------------------------------------------------------
+// seed 004: Hermite curve, cardinal and Angular splines, guide points
+
+fn four_points() -> Vec<Vector2<f64>> {
+    vec![v2(0.0, 0.0), v2(1.0, 1.0), v2(2.0, 0.0), v2(3.0, 1.0)]
+}
+
+fn angular_ok(p: Vec<Vector2<f64>>) -> CaseResult {
+    let s = ok(AngularSpline::try_new(p.clone()))?;
+    let line = ok(s.polyline(257))?;
+    ensure!(finite_vecs(&line), "a point is not finite");
+    let scale = p
+        .iter()
+        .map(|q| q.abs().max())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    for j in 0..=s.pieces() {
+        let e = (s.point(j as f64) - p[j + 1]).abs().max();
+        ensure!(e <= 1e-14 * scale, "misses point {}: {e:e}", j + 1);
+    }
+    Ok(())
+}
+
+fn seed004_cases() -> Vec<Case> {
+    vec![
+        case("seed004::hermite_curve_one_point", || {
+            expect_err!(
+                HermiteCurve::try_new(vec![0.0], vec![v2(0.0, 0.0)], vec![v2(1.0, 0.0)]),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::hermite_curve_count_mismatch", || {
+            expect_err!(
+                HermiteCurve::try_new(
+                    vec![0.0, 1.0],
+                    vec![v2(0.0, 0.0), v2(1.0, 0.0)],
+                    vec![v2(1.0, 0.0)]
+                ),
+                Error::CountMismatch { .. }
+            )
+        }),
+        case("seed004::hermite_curve_repeated_knot", || {
+            expect_err!(
+                HermiteCurve::try_new(
+                    vec![0.0, 0.0],
+                    vec![v2(0.0, 0.0), v2(1.0, 0.0)],
+                    vec![v2(1.0, 0.0); 2]
+                ),
+                Error::RepeatedParameter { .. }
+            )
+        }),
+        case("seed004::hermite_curve_nan_tangent", || {
+            expect_err!(
+                HermiteCurve::try_new(
+                    vec![0.0, 1.0],
+                    vec![v2(0.0, 0.0), v2(1.0, 0.0)],
+                    vec![v2(f64::NAN, 0.0); 2]
+                ),
+                Error::NonFinite { .. }
+            )
+        }),
+        case(
+            "seed004::hermite_curve_tangent_times_width_too_large",
+            || {
+                expect_err!(
+                    HermiteCurve::try_new(
+                        vec![0.0, 1e300],
+                        vec![v2(0.0, 0.0), v2(1.0, 0.0)],
+                        vec![v2(1e300, 0.0); 2]
+                    ),
+                    Error::CoordinateTooLarge { .. } | Error::NonFinite { .. }
+                )
+            },
+        ),
+        case("seed004::cardinal_three_points", || {
+            expect_err!(
+                CardinalSpline::try_new(four_points()[..3].to_vec(), 0.5),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::cardinal_a_zero", || {
+            expect_err!(
+                CardinalSpline::try_new(four_points(), 0.0),
+                Error::NotPositive { .. }
+            )
+        }),
+        case("seed004::cardinal_a_negative", || {
+            expect_err!(
+                CardinalSpline::try_new(four_points(), -0.5),
+                Error::NotPositive { .. }
+            )
+        }),
+        case("seed004::cardinal_a_nan", || {
+            expect_err!(
+                CardinalSpline::try_new(four_points(), f64::NAN),
+                Error::NotPositive { .. }
+            )
+        }),
+        case("seed004::cardinal_a_huge_overflows_tangent", || {
+            let p = vec![v2(0.0, 0.0), v2(1.0, 1.0), v2(1e300, 0.0), v2(3.0, 1.0)];
+            expect_err!(
+                CardinalSpline::try_new(p, 1e10),
+                Error::CoordinateTooLarge { .. } | Error::NonFinite { .. }
+            )
+        }),
+        case("seed004::cardinal_nan_point", || {
+            let mut p = four_points();
+            p[2].x = f64::NAN;
+            expect_err!(CardinalSpline::try_new(p, 0.5), Error::NonFinite { .. })
+        }),
+        case("seed004::cardinal_closed_two_points", || {
+            expect_err!(
+                CardinalSpline::closed(&four_points()[..2], 0.5),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::cardinal_repeated_points_are_fine", || {
+            // the cardinal spline has no chord: equal consecutive points are a valid stop
+            let p = vec![v2(0.0, 0.0), v2(1.0, 1.0), v2(1.0, 1.0), v2(3.0, 1.0)];
+            let s = ok(CardinalSpline::try_new(p, 0.5))?;
+            ensure!(finite_vecs(&ok(s.polyline(33))?), "not finite");
+            Ok(())
+        }),
+        case("seed004::angular_three_points", || {
+            expect_err!(
+                AngularSpline::try_new(four_points()[..3].to_vec()),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::angular_empty", || {
+            expect_err!(AngularSpline::try_new(vec![]), Error::TooFewPoints { .. })
+        }),
+        case("seed004::angular_repeated_point", || {
+            let mut p = four_points();
+            p[2] = p[1];
+            expect_err!(AngularSpline::try_new(p), Error::RepeatedPoint { index: 2 })
+        }),
+        case("seed004::angular_repeated_guide", || {
+            let mut p = four_points();
+            p[1] = p[0];
+            expect_err!(AngularSpline::try_new(p), Error::RepeatedPoint { index: 1 })
+        }),
+        case("seed004::angular_repeated_signed_zero", || {
+            let p = vec![v2(0.0, 0.0), v2(-0.0, -0.0), v2(2.0, 0.0), v2(3.0, 1.0)];
+            expect_err!(AngularSpline::try_new(p), Error::RepeatedPoint { index: 1 })
+        }),
+        case("seed004::angular_reversal", || {
+            let mut p = four_points();
+            p[2] = p[0];
+            expect_err!(
+                AngularSpline::try_new(p),
+                Error::ReversedPoints { index: 1 }
+            )
+        }),
+        case("seed004::angular_nan", || {
+            let mut p = four_points();
+            p[3].y = f64::NAN;
+            expect_err!(AngularSpline::try_new(p), Error::NonFinite { .. })
+        }),
+        case("seed004::angular_infinite", || {
+            let mut p = four_points();
+            p[0].x = f64::NEG_INFINITY;
+            expect_err!(AngularSpline::try_new(p), Error::NonFinite { .. })
+        }),
+        case("seed004::angular_beyond_coordinate_limit", || {
+            let mut p = four_points();
+            p[0].x = 2.0 * MAX_COORDINATE;
+            expect_err!(AngularSpline::try_new(p), Error::CoordinateTooLarge { .. })
+        }),
+        case("seed004::angular_at_coordinate_limit", || {
+            let m = MAX_COORDINATE / 4.0;
+            let p = vec![v2(-m, -m), v2(-m, m), v2(m, m), v2(m, -m)];
+            angular_ok(p)
+        }),
+        case("seed004::angular_subnormal_spacing", || {
+            let e = 1e-310;
+            angular_ok(vec![
+                v2(0.0, 0.0),
+                v2(e, e),
+                v2(2.0 * e, 0.0),
+                v2(3.0 * e, e),
+            ])
+        }),
+        case("seed004::angular_mixed_scales", || {
+            angular_ok(vec![
+                v2(0.0, 0.0),
+                v2(1e-300, 0.0),
+                v2(1e300, 1e300),
+                v2(-1e300, 1e300),
+                v2(0.0, 1.0),
+            ])
+        }),
+        case("seed004::angular_near_reversal", || {
+            angular_ok(vec![
+                v2(0.0, 0.0),
+                v2(1.0, 0.0),
+                v2(1e-12, 1e-15),
+                v2(-1.0, 1.0),
+            ])
+        }),
+        case("seed004::angular_collinear", || {
+            angular_ok(vec![
+                v2(0.0, 0.0),
+                v2(1.0, 0.0),
+                v2(2.0, 0.0),
+                v2(3.0, 0.0),
+                v2(4.0, 0.0),
+            ])
+        }),
+        case("seed004::angular_backtrack_on_line", || {
+            // P₀ lies on the chord between P₁ and P₂: φ = π, a straight piece
+            angular_ok(vec![v2(0.5, 0.0), v2(0.0, 0.0), v2(1.0, 0.0), v2(2.0, 1.0)])
+        }),
+        case("seed004::angular_closed_two_points", || {
+            expect_err!(
+                AngularSpline::closed(&four_points()[..2]),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::angular_closed_seam_repeats", || {
+            let q = [v2(0.0, 0.0), v2(1.0, 0.0), v2(1.0, 1.0), v2(0.0, 0.0)];
+            expect_err!(AngularSpline::closed(&q), Error::RepeatedPoint { .. })
+        }),
+        case("seed004::angular_eval_nan_and_outside", || {
+            let s = ok(AngularSpline::try_new(four_points()))?;
+            expect_err!(s.try_point(f64::NAN), Error::NonFinite { .. })?;
+            expect_err!(s.try_point(1.5), Error::OutOfDomain { .. })?;
+            let outside = s.point(7.0);
+            ensure!(
+                outside == s.point(1.0),
+                "outside the domain the end point, got {outside:?}"
+            );
+            Ok(())
+        }),
+        risky("seed004::angular_too_many_points", || {
+            expect_err!(
+                AngularSpline::closed(&vec![v2(0.0, 0.0); MAX_ELEMENTS]),
+                Error::TooLarge { .. }
+            )
+        }),
+        case("seed004::guide_repeated", || {
+            expect_err!(
+                guide_point(v2(1.0, 1.0), v2(1.0, 1.0), v2(1.0, 0.0)),
+                Error::RepeatedPoint { .. }
+            )
+        }),
+        case("seed004::guide_zero_tangent", || {
+            expect_err!(
+                guide_point(v2(0.0, 0.0), v2(1.0, 1.0), v2(0.0, 0.0)),
+                Error::Degenerate { .. }
+            )
+        }),
+        case("seed004::guide_tangent_away", || {
+            expect_err!(
+                guide_point(v2(0.0, 0.0), v2(1.0, 0.0), v2(-2.0, 0.0)),
+                Error::Degenerate { .. }
+            )
+        }),
+        case("seed004::guide_nan", || {
+            expect_err!(
+                guide_point(v2(0.0, 0.0), v2(1.0, 0.0), v2(f64::NAN, 0.0)),
+                Error::NonFinite { .. }
+            )
+        }),
+        case("seed004::guide_nearly_away_is_far", || {
+            // almost straight away: a huge circle; the guide is far but finite, or refused
+            let r = guide_point(v2(0.0, 0.0), v2(1.0, 0.0), v2(-1.0, 1e-8));
+            match r {
+                Ok(g) => ensure!(g.iter().all(|x| x.is_finite()), "{g:?}"),
+                Err(Error::Degenerate { .. } | Error::CoordinateTooLarge { .. }) => {}
+                Err(e) => return Err(format!("unexpected {e}")),
+            }
+            Ok(())
+        }),
+        case("seed004::guide_at_coordinate_limit", || {
+            let m = MAX_COORDINATE;
+            let r = guide_point(v2(-m, 0.0), v2(m, 0.0), v2(-1.0, 0.5));
+            match r {
+                Ok(g) => ensure!(g.iter().all(|x| x.abs() <= MAX_COORDINATE), "{g:?}"),
+                Err(Error::CoordinateTooLarge { .. }) => {}
+                Err(e) => return Err(format!("unexpected {e}")),
+            }
+            Ok(())
+        }),
+    ]
+}
+
 fn all_cases() -> Vec<Case> {
     let mut all = Vec::new();
     all.extend(domain_cases());
@@ -4556,6 +4843,7 @@ fn all_cases() -> Vec<Case> {
     all.extend(more_cases());
     all.extend(shorthand_cases());
     all.extend(sweep_cases());
+    all.extend(seed004_cases());
     all
 }
 

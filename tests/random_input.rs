@@ -81,13 +81,13 @@ use splinelab::nurbs::MIN_WEIGHT_RATIO;
 use splinelab::tensor::{Net, NET_LIMIT};
 use splinelab::{
     bernstein3, bernstein_all, bernstein_sum, compare, convergence, de_casteljau,
-    de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, hermite_basis, lagrange4,
-    matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, report_codice7_net,
-    runge, spline_errors, tabulate, uniform_bspline4, uniform_spline_errors, BSplineBasis,
-    BSplineCurve, BezierPatch, Blending, CubicSpline, EndCondition, EndKnots, ExpSurface,
-    FnSurface, Grid, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NurbsCurve,
-    ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation, PiecewiseLinear,
-    PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
+    de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, guide_point, hermite_basis,
+    lagrange4, matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval,
+    report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4, uniform_spline_errors,
+    AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending, CardinalSpline, CubicSpline,
+    EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch, HermiteSpline, Interval,
+    KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization, Partials, Partition,
+    PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -1818,6 +1818,79 @@ proptest! {
                 let t = pm.parameters(&pts).expect("parameters accepted by the polygon");
                 check_interp("PiecewiseLinear::curve", &pts, |i| p.point(t[i]))?;
                 check_curve("PiecewiseLinear::curve", &p, &domain_params(0.0, 1.0, &fr, &t), 5)?;
+            }
+            Ok(())
+        })?;
+    }
+
+    /// `CardinalSpline::try_new` and `closed`: interpolates its inner points, finite on the
+    /// domain, C¹ tangents `a (Pᵢ₊₁ − Pᵢ₋₁)` at the joints.
+    #[test]
+    fn cardinal_spline(pts in points::<2>(0..=10), a in prop_oneof![4 => 0.001..2.0f64, 1 => num()], closed in prop::bool::weighted(0.3), fr in fracs()) {
+        guard(|| {
+            let r = if closed { CardinalSpline::closed(&pts, a) } else { CardinalSpline::try_new(pts.clone(), a) };
+            if let Ok(c) = r {
+                prop_assert!(a.is_finite() && a > 0.0);
+                let p = c.points().to_vec();
+                let inner = &p[1..p.len() - 1];
+                check_interp("CardinalSpline", inner, |i| c.point(i as f64))?;
+                let (lo, hi) = c.domain();
+                check_curve("CardinalSpline", &c, &domain_params(lo, hi, &fr, &[]), 5)?;
+                for i in 1..c.segments() {
+                    let expected = (p[i + 2] - p[i]) * a;
+                    let got = c.derivative(i as f64);
+                    prop_assert!(amax(&(got - expected)) <= 1e-12 * amax(&expected).max(max_norm(&p) * a) + FLOOR, "tangent {}: {:?} vs {:?}", i, got, expected);
+                }
+            }
+            Ok(())
+        })?;
+    }
+
+    /// `AngularSpline::try_new` and `closed`: interpolates its inner points, finite on the
+    /// domain, tangents at the points are the unit circle tangents (G¹), errors typed.
+    #[test]
+    fn angular_spline(pts in points::<2>(0..=10), closed in prop::bool::weighted(0.3), fr in fracs()) {
+        guard(|| {
+            let r = if closed { AngularSpline::closed(&pts) } else { AngularSpline::try_new(pts.clone()) };
+            if let Ok(c) = r {
+                let p = c.points().to_vec();
+                let inner = &p[1..p.len() - 1];
+                check_interp("AngularSpline", inner, |i| c.point(i as f64))?;
+                let (lo, hi) = c.domain();
+                let params = domain_params(lo, hi, &fr, &[]);
+                check_curve("AngularSpline", &c, &params, 5)?;
+                for &u in &params {
+                    let d = c.derivative(u);
+                    prop_assert!(finite(&d), "C′({:e}) = {:?}", u, d);
+                }
+                for (k, t) in c.tangents().iter().enumerate() {
+                    prop_assert!(finite(t) && (t.norm() - 1.0).abs() <= 1e-12, "tangent {}: {:?}", k, t);
+                }
+                for j in 0..c.pieces() {
+                    if c.kinds()[j] == splinelab::PieceKind::Straight {
+                        continue;
+                    }
+                    for (s, t) in [(0.0, c.tangents()[j]), (1.0, c.tangents()[j + 1])] {
+                        let d = c.eval_piece(j, Dual64::from_re(s).derivative()).map(|x| x.eps);
+                        prop_assert!(finite(&d), "piece {} at {}: {:?}", j, s, d);
+                        let n = d.norm();
+                        if n > 0.0 && n.is_finite() {
+                            let u = d / n;
+                            prop_assert!(u.perp(&t).abs() <= 1e-6 && u.dot(&t) > 0.0, "piece {} at s = {}: direction {:?} vs tangent {:?}", j, s, u, t);
+                        }
+                    }
+                }
+            }
+            Ok(())
+        })?;
+    }
+
+    /// `guide_point`: a finite guide within the coordinate limit, or a typed error.
+    #[test]
+    fn guide_points(p in points::<2>(3..=3)) {
+        guard(|| {
+            if let Ok(g) = guide_point(p[0], p[1], p[2]) {
+                prop_assert!(g.iter().all(|x| x.abs() <= MAX_COORDINATE), "guide {:?}", g);
             }
             Ok(())
         })?;

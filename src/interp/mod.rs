@@ -1,6 +1,7 @@
 //! Interpolation: polynomial (power basis, Lagrange), piecewise linear, cubic splines with
 //! four end conditions, B-spline collocation, and parametrizations (seeds 001 and 004).
 
+pub mod angular;
 pub mod cardinal;
 pub mod collocation;
 pub mod cubic;

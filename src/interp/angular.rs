@@ -1,0 +1,572 @@
+//! The Angular spline of seed 004 §3 (Barsi & Milanesi 1986, after the IEI Pisa reports): a
+//! local, parameter-free G¹ curve through plane points, each piece built from the circles
+//! through consecutive points. Read in full in `spec/seed004.md` §1.7.
+//!
+//! **Tangents.** At an interpolated point `Pᵢ` the curve is tangent to the circle `Cᵢ` through
+//! `Pᵢ₋₁, Pᵢ, Pᵢ₊₁`, oriented the way the points run round it; with `u = Pᵢ − Pᵢ₋₁`,
+//! `v = Pᵢ₊₁ − Pᵢ` the oriented tangent is `tᵢ ∝ u/|u|² + v/|v|²` (for collinear points, the
+//! line). It vanishes only when `Pᵢ₊₁ = Pᵢ₋₁` ([`Error::ReversedPoints`]).
+//!
+//! **One piece** `Pᵢ → Pᵢ₊₁` depends on `Pᵢ₋₁ … Pᵢ₊₂` only. In the local frame (origin at the
+//! chord's midpoint, x along the chord, `Pᵢ = (−d, 0)`, `Pᵢ₊₁ = (d, 0)`), let `φᵢ`, `φᵢ₊₁` be
+//! the angles of the two end tangents from the x-axis and `ϑ = φ + π/2` the angles of the
+//! radii. In the **standard case** (`φᵢ > 0 > φᵢ₊₁`: both guides below the chord) the paper's
+//! curve is the locus of the point at angle `α` on the circle through `Pᵢ, Pᵢ₊₁` centred at
+//! `(0, c(α))`, with `c(α) = −d tan(kα + ψ)`,
+//!
+//! ```text
+//! k = (ϑᵢ₊₁ + ϑᵢ − π)/(ϑᵢ₊₁ − ϑᵢ),   ψ = π − ϑᵢ − kϑᵢ,   α from ϑᵢ down to ϑᵢ₊₁,
+//! x(α) = d cos α / cos α′,   y(α) = d (sin α − sin α′)/cos α′,   α′ = kα + ψ.
+//! ```
+//!
+//! Here `α` is linear in the piece parameter `s ∈ [0, 1]`, and so is `α′` (from `π − ϑᵢ` to
+//! `ϑᵢ₊₁`). With `β = α − π/2` and `γ = π/2 − α′` the same curve reads
+//!
+//! ```text
+//! β(s) = (1 − s) φᵢ + s φᵢ₊₁,   γ(s) = (1 − s) φᵢ − s φᵢ₊₁,
+//! x = −d sin β / sin γ,   y = −2d sin((1 − s) φᵢ) sin(s φᵢ₊₁) / sin γ,
+//! ```
+//!
+//! which is what is evaluated: the ends are hit exactly (`β = γ` at `s = 0`, `β = −γ` at
+//! `s = 1`, and a factor of `y` vanishes), `sin α − sin α′` no longer cancels, and
+//! `sin γ ≥ min(sin φᵢ, sin |φᵢ₊₁|) > 0` on the whole piece (the sine is concave on `[0, π]`).
+//! The paper's form is kept as the independent reference of the tests. When `φᵢ₊₁ = −φᵢ`
+//! (`k = 0`, four concyclic points) the piece is an exact arc of the circle.
+//!
+//! **The other cases.** Both guides above the chord (`φᵢ < 0 < φᵢ₊₁`, the paper's Fig. 4): the
+//! standard piece of the mirrored data, mirrored back. Guides on opposite sides (`φᵢ`, `φᵢ₊₁`
+//! of one sign): an inflection, split at a point `P_F` with a tangent there chosen by an
+//! [`InflectionRule`] — the paper uses "a heuristic procedure" it does not give; the default
+//! [`HermiteMidpoint`] is the spec's decision A1. An end tangent within
+//! [`COLLINEAR_SIN`] of the chord line (three collinear points, spec decision A2): the straight
+//! segment, the limit of the construction (the bulge is about `2φd`).
+//!
+//! **Properties** (tested): interpolation, G¹ at every joint (the joined curve is not G²: the
+//! curvature at an end is not the circle's), locality (four points per piece), invariance
+//! under similarities. The paper claims invariance under *all* affine maps; that is false —
+//! a shear or a non-uniform scale changes the curve (the tests carry a counterexample).
+
+use crate::curve::ParametricCurve;
+use crate::error::{finite_points, Error, Result};
+use nalgebra::Vector2;
+use num_dual::DualNum;
+
+/// An end tangent whose angle `φ` from the chord has `|sin φ| ≤ COLLINEAR_SIN` makes the piece
+/// the straight chord (spec decision A2: the limit of the construction as `φ → 0` or `π`).
+pub const COLLINEAR_SIN: f64 = 1e-9;
+
+/// How a piece `Pᵢ → Pᵢ₊₁` is built, from the end tangents' angles `φᵢ`, `φᵢ₊₁` to the chord.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PieceKind {
+    /// An end tangent on the chord line: the straight chord.
+    Straight,
+    /// `φᵢ > 0 > φᵢ₊₁`: the paper's standard case, a hump to the left of the chord.
+    Standard,
+    /// `φᵢ < 0 < φᵢ₊₁`: the mirror image of a standard piece (seed 004 Fig. 4).
+    Reflected,
+    /// `φᵢ`, `φᵢ₊₁` of one sign: two pieces joined at an inflection point.
+    Inflection,
+}
+
+/// The case of a piece whose end tangents make angles `phi_a`, `phi_b` (radians, in
+/// `(−π, π]`) with its chord: the one classification rule of the construction.
+pub fn classify(phi_a: f64, phi_b: f64) -> PieceKind {
+    if phi_a.sin().abs() <= COLLINEAR_SIN || phi_b.sin().abs() <= COLLINEAR_SIN {
+        PieceKind::Straight
+    } else if phi_a > 0.0 && phi_b < 0.0 {
+        PieceKind::Standard
+    } else if phi_a < 0.0 && phi_b > 0.0 {
+        PieceKind::Reflected
+    } else {
+        PieceKind::Inflection
+    }
+}
+
+/// An inflection point in a piece's frame: position `(x, y)` in units of the half chord `d`
+/// (the piece runs from `(−1, 0)` to `(1, 0)`) and the tangent's angle `phi` from the chord.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InflectionPoint {
+    /// Abscissa, in units of `d`.
+    pub x: f64,
+    /// Ordinate, in units of `d`.
+    pub y: f64,
+    /// Angle of the tangent at the inflection point from the chord direction.
+    pub phi: f64,
+}
+
+/// Where an inflection piece is split and the tangent there: the one part of the Angular
+/// spline the paper leaves open ("a heuristic procedure", seed 004 §3). Replaceable: pass your
+/// own to [`AngularSpline::with_rule`].
+///
+/// `split` is called in the frame where both end angles are positive, `φᵢ, φᵢ₊₁ ∈ (0, π)`
+/// (the curve leaves `Pᵢ` above the chord and reaches `Pᵢ₊₁` from below). Each half must then
+/// be a standard, reflected or straight piece; a rule that makes a half an inflection again,
+/// or returns a non-finite or far-away point, is refused with [`Error::Degenerate`].
+pub trait InflectionRule {
+    /// The rule's name, as figures and tables print it.
+    fn name(&self) -> &'static str;
+    /// The inflection point for end angles `phi_a, phi_b ∈ (0, π)`.
+    fn split(&self, phi_a: f64, phi_b: f64) -> InflectionPoint;
+}
+
+/// Spec decision A1, the default: `P_F` at the chord's midpoint, with the tangent of the cubic
+/// Hermite interpolant of the two ends (end derivatives `2d tᵢ`, `2d tᵢ₊₁`) at its middle,
+///
+/// `φ_F = −atan2(½(sin φᵢ + sin φᵢ₊₁), 3 − ½(cos φᵢ + cos φᵢ₊₁))`.
+///
+/// Always valid: `φ_F ∈ (−19.5°, 0)`, so the first half is a standard piece and the second a
+/// reflected one for every `φᵢ, φᵢ₊₁ ∈ (0, π)`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct HermiteMidpoint;
+
+impl InflectionRule for HermiteMidpoint {
+    fn name(&self) -> &'static str {
+        "Hermite midpoint (A1)"
+    }
+
+    fn split(&self, phi_a: f64, phi_b: f64) -> InflectionPoint {
+        let phi =
+            -(0.5 * (phi_a.sin() + phi_b.sin())).atan2(3.0 - 0.5 * (phi_a.cos() + phi_b.cos()));
+        InflectionPoint {
+            x: 0.0,
+            y: 0.0,
+            phi,
+        }
+    }
+}
+
+/// The "mirror" (biarc-like) alternative: `P_F` at the chord's midpoint with
+/// `φ_F = −(φᵢ + φᵢ₊₁)/2`. Valid for all end angles, but on the sinusoid sampled at its
+/// extrema about ten times less accurate than [`HermiteMidpoint`] (spec §1.7).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct MirrorMidpoint;
+
+impl InflectionRule for MirrorMidpoint {
+    fn name(&self) -> &'static str {
+        "mirror midpoint"
+    }
+
+    fn split(&self, phi_a: f64, phi_b: f64) -> InflectionPoint {
+        InflectionPoint {
+            x: 0.0,
+            y: 0.0,
+            phi: -0.5 * (phi_a + phi_b),
+        }
+    }
+}
+
+/// One elementary arc: a standard piece in the frame `origin + x·ex + y·ey` (`ex`, `ey` carry
+/// the half chord `d` and the reflection), or the straight chord.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Arc {
+    origin: Vector2<f64>,
+    ex: Vector2<f64>,
+    ey: Vector2<f64>,
+    phi_a: f64,
+    phi_b: f64,
+    straight: bool,
+}
+
+impl Arc {
+    /// The point at `s ∈ [0, 1]` (module docs: the half-angle form of the paper's curve).
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D) -> Vector2<D> {
+        let (x, y) = if self.straight {
+            (s * 2.0 - 1.0, D::zero())
+        } else {
+            let r = D::one() - s;
+            let (a, b) = (r * self.phi_a, s * self.phi_b);
+            let sin_gamma = (a - b).sin();
+            (
+                -(a + b).sin() / sin_gamma,
+                a.sin() * b.sin() * (-2.0) / sin_gamma,
+            )
+        };
+        Vector2::new(
+            x * self.ex.x + y * self.ey.x + self.origin.x,
+            x * self.ex.y + y * self.ey.y + self.origin.y,
+        )
+    }
+}
+
+fn hypot(v: Vector2<f64>) -> f64 {
+    v.x.hypot(v.y)
+}
+
+fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The unit tangent at `b` of the circle through `a, b, c`, oriented from `a` through `b` to
+/// `c` (the line's direction when they are collinear); the points are distinct and `a ≠ c`.
+///
+/// `|v|²u + |u|²v` (`u = b − a`, `v = c − b`) has norm `|u||v||w|` with `w = c − a`; its two
+/// terms cancel only when `w` is small, and then the equal form
+/// `|u|²(w − 2(w·û)û + |w|²u/|u|²)` is used, which has no cancellation. Everything is scaled
+/// by the lengths first, so no square overflows.
+fn circle_tangent(a: Vector2<f64>, b: Vector2<f64>, c: Vector2<f64>) -> Vector2<f64> {
+    let (u, v, w) = (b - a, c - b, c - a);
+    let (lu, lv, lw) = (hypot(u), hypot(v), hypot(w));
+    let uh = u / lu;
+    let t = if lw < 0.5 * lu.min(lv) {
+        let wh = w / lw;
+        wh - uh * (2.0 * wh.dot(&uh)) + uh * (lw / lu)
+    } else {
+        uh * lv + (v / lv) * lu
+    };
+    t / hypot(t)
+}
+
+/// The guide `G` before `p1` that makes the circle
+/// through `G, p1, p2` tangent at `p1` to `tangent`, oriented along it — so an Angular spline
+/// whose first points are `G, p1, p2, …` leaves `p1` along `tangent` (spec §1.7). The same
+/// call with the points reversed and `−tangent` gives the last guide.
+///
+/// When `tangent · (p2 − p1) > 0`, `G` is the mirror image of `p2` in the normal at `p1`;
+/// otherwise it is the midpoint of the circle's arc from `p2` back to `p1`.
+///
+/// # Errors
+/// [`Error::NonFinite`] or [`Error::CoordinateTooLarge`] for an input;
+/// [`Error::RepeatedPoint`] if `p1 = p2`; [`Error::Degenerate`] for a zero tangent or one
+/// pointing straight away from `p2` (no finite circle is tangent to it through `p2`, within
+/// [`COLLINEAR_SIN`]); [`Error::CoordinateTooLarge`] if `G` is beyond the coordinate limit.
+pub fn guide_point(
+    p1: Vector2<f64>,
+    p2: Vector2<f64>,
+    tangent: Vector2<f64>,
+) -> Result<Vector2<f64>> {
+    finite_points("guide point input", &[p1, p2, tangent])?;
+    if p1 == p2 {
+        return Err(Error::RepeatedPoint { index: 1 });
+    }
+    let lt = hypot(tangent);
+    if lt == 0.0 {
+        return Err(Error::Degenerate {
+            what: "guide point",
+            reason: "the tangent is zero",
+        });
+    }
+    let t = tangent / lt;
+    let chord = p2 - p1;
+    let lc = hypot(chord);
+    let ch = chord / lc;
+    let along = t.dot(&ch);
+    let g = if along > 0.0 {
+        p2 - t * (2.0 * along * lc)
+    } else {
+        // the circle through p1 tangent to t: centre p1 + r n, n the unit normal on p2's side
+        let side = cross(t, ch);
+        if side.abs() <= COLLINEAR_SIN {
+            return Err(Error::Degenerate {
+                what: "guide point",
+                reason: "the tangent points straight away from the next point",
+            });
+        }
+        let n = Vector2::new(-t.y, t.x) * side.signum();
+        // r = |chord|² / (2 chord·n), written to avoid squaring
+        let r = lc / (2.0 * ch.dot(&n));
+        let centre = p1 + n * r;
+        let a1 = (p1 - centre).y.atan2((p1 - centre).x);
+        let a2 = (p2 - centre).y.atan2((p2 - centre).x);
+        // travel is counter-clockwise when the tangent turns left towards p2
+        let ccw = side.signum();
+        let mut ahead = ccw * (a2 - a1);
+        ahead = ahead.rem_euclid(std::f64::consts::TAU);
+        let behind = 0.5 * (std::f64::consts::TAU - ahead);
+        let ag = a1 - ccw * behind;
+        centre + Vector2::new(ag.cos(), ag.sin()) * r
+    };
+    for x in g.iter() {
+        crate::error::derived_coordinate("guide point", *x)?;
+    }
+    Ok(g)
+}
+
+/// The Angular spline through `P₁ … P_{m−2}` with guides `P₀` and `P_{m−1}`, parameter
+/// `u ∈ [0, m − 3]` (piece `j` on `[j, j + 1]`, from `P_{j+1}` to `P_{j+2}`; an inflection piece
+/// has its two halves on `[j, j + ½]` and `[j + ½, j + 1]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AngularSpline {
+    points: Vec<Vector2<f64>>,
+    tangents: Vec<Vector2<f64>>,
+    kinds: Vec<PieceKind>,
+    arcs: Vec<Arc>,
+    breaks: Vec<f64>,
+    rule: &'static str,
+}
+
+impl AngularSpline {
+    /// The open Angular spline of `points` (the first and last are guides), with the default
+    /// inflection rule [`HermiteMidpoint`].
+    ///
+    /// # Errors
+    /// See [`AngularSpline::with_rule`].
+    pub fn try_new(points: Vec<Vector2<f64>>) -> Result<Self> {
+        Self::with_rule(points, &HermiteMidpoint)
+    }
+
+    /// The open Angular spline of `points` with the inflection rule `rule`.
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] below 4 points; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`]; [`Error::NonFinite`] or [`Error::CoordinateTooLarge`]
+    /// for a point; [`Error::RepeatedPoint`] for two equal consecutive points;
+    /// [`Error::ReversedPoints`] if `Pᵢ₊₁ = Pᵢ₋₁` (no circle); [`Error::Degenerate`] if the
+    /// rule's split is unusable; [`Error::CoordinateTooLarge`] if a piece could leave the
+    /// coordinate limit.
+    pub fn with_rule(points: Vec<Vector2<f64>>, rule: &dyn InflectionRule) -> Result<Self> {
+        crate::error::size("Angular spline points", points.len())?;
+        if points.len() < 4 {
+            return Err(Error::TooFewPoints {
+                what: "Angular spline points (2 guides and 2 interpolated)",
+                needed: 4,
+                got: points.len(),
+            });
+        }
+        finite_points("Angular spline point", &points)?;
+        if let Some(i) = (1..points.len()).find(|&i| points[i] == points[i - 1]) {
+            return Err(Error::RepeatedPoint { index: i });
+        }
+        if let Some(i) = (1..points.len() - 1).find(|&i| points[i + 1] == points[i - 1]) {
+            return Err(Error::ReversedPoints { index: i });
+        }
+        let tangents: Vec<Vector2<f64>> = points
+            .windows(3)
+            .map(|w| circle_tangent(w[0], w[1], w[2]))
+            .collect();
+        let pieces = points.len() - 3;
+        let mut kinds = Vec::with_capacity(pieces);
+        let mut arcs = Vec::with_capacity(pieces);
+        let mut breaks = Vec::with_capacity(pieces + 1);
+        breaks.push(0.0);
+        for j in 0..pieces {
+            let (p0, p1) = (points[j + 1], points[j + 2]);
+            let (kind, piece) = build(p0, p1, tangents[j], tangents[j + 1], rule)?;
+            kinds.push(kind);
+            if let [first, second] = piece[..] {
+                arcs.extend([first, second]);
+                breaks.push(j as f64 + 0.5);
+            } else {
+                arcs.push(piece[0]);
+            }
+            breaks.push((j + 1) as f64);
+        }
+        Ok(Self {
+            points,
+            tangents,
+            kinds,
+            arcs,
+            breaks,
+            rule: rule.name(),
+        })
+    }
+
+    /// The closed Angular spline through `points`, closed as seed 004 closes it: the first
+    /// three points are repeated at the end (`Q₁ … Q_m, Q₁, Q₂, Q₃`, spec decision A5; the
+    /// circle through 3 points takes "6 points"), so the curve runs `Q₂ → … → Q_m → Q₁ → Q₂`,
+    /// G¹ all round. Default inflection rule.
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] below 3 points; the errors of [`AngularSpline::with_rule`].
+    pub fn closed(points: &[Vector2<f64>]) -> Result<Self> {
+        Self::closed_with_rule(points, &HermiteMidpoint)
+    }
+
+    /// [`AngularSpline::closed`] with the inflection rule `rule`.
+    ///
+    /// # Errors
+    /// As [`AngularSpline::closed`].
+    pub fn closed_with_rule(points: &[Vector2<f64>], rule: &dyn InflectionRule) -> Result<Self> {
+        if points.len() < 3 {
+            return Err(Error::TooFewPoints {
+                what: "closed Angular spline points",
+                needed: 3,
+                got: points.len(),
+            });
+        }
+        crate::error::size_sum("closed Angular spline points", points.len(), 3)?;
+        let mut all = points.to_vec();
+        all.extend_from_slice(&points[..3]);
+        Self::with_rule(all, rule)
+    }
+
+    /// The points, guides included.
+    pub fn points(&self) -> &[Vector2<f64>] {
+        &self.points
+    }
+
+    /// The unit tangents at the interpolated points `P₁ … P_{m−2}` (circle tangents).
+    pub fn tangents(&self) -> &[Vector2<f64>] {
+        &self.tangents
+    }
+
+    /// The case of each piece.
+    pub fn kinds(&self) -> &[PieceKind] {
+        &self.kinds
+    }
+
+    /// Number of pieces, `m − 3`.
+    pub fn pieces(&self) -> usize {
+        self.kinds.len()
+    }
+
+    /// The name of the inflection rule the spline was built with.
+    pub fn rule(&self) -> &'static str {
+        self.rule
+    }
+
+    /// Piece `j` at its own parameter `s ∈ [0, 1]` (from `P_{j+1}` at 0 to `P_{j+2}` at 1),
+    /// exact at both ends: each piece's one-sided values and derivatives at a joint.
+    ///
+    /// # Panics
+    /// If `j` is not below [`AngularSpline::pieces`].
+    pub fn eval_piece<D: DualNum<Primitive = f64> + Copy>(&self, j: usize, s: D) -> Vector2<D> {
+        assert!(j < self.pieces(), "piece {j} of {}", self.pieces());
+        self.eval_in(j, s)
+    }
+
+    fn eval_in<D: DualNum<Primitive = f64> + Copy>(&self, j: usize, s: D) -> Vector2<D> {
+        // the arcs of piece j: breaks[k] = j and the next one or two
+        let k = self.breaks.partition_point(|&b| b < j as f64);
+        if self.kinds[j] == PieceKind::Inflection {
+            if s.re() < 0.5 {
+                self.arcs[k].eval(s * 2.0)
+            } else {
+                self.arcs[k + 1].eval(s * 2.0 - 1.0)
+            }
+        } else {
+            self.arcs[k].eval(s)
+        }
+    }
+}
+
+/// The arcs of the piece `p0 → p1` with unit end tangents `t0`, `t1`: one, or two for an
+/// inflection.
+fn build(
+    p0: Vector2<f64>,
+    p1: Vector2<f64>,
+    t0: Vector2<f64>,
+    t1: Vector2<f64>,
+    rule: &dyn InflectionRule,
+) -> Result<(PieceKind, Vec<Arc>)> {
+    let frame = Frame::new(p0, p1);
+    let (phi_a, phi_b) = (frame.angle(t0), frame.angle(t1));
+    let kind = classify(phi_a, phi_b);
+    if kind != PieceKind::Inflection {
+        return Ok((kind, vec![frame.arc(kind, phi_a, phi_b)?]));
+    }
+    let sigma = phi_a.signum();
+    let split = rule.split(sigma * phi_a, sigma * phi_b);
+    let usable = [split.x, split.y, split.phi].iter().all(|v| v.is_finite())
+        && split.x.abs() <= 4.0
+        && split.y.abs() <= 4.0;
+    if !usable {
+        return Err(Error::Degenerate {
+            what: "inflection rule",
+            reason: "the split point is not finite or lies more than 4 half chords away",
+        });
+    }
+    let pf = frame.origin + frame.ex * (frame.d * split.x) + frame.ey * (sigma * frame.d * split.y);
+    let tf = frame.ex * split.phi.cos() + frame.ey * (sigma * split.phi.sin());
+    if pf == p0 || pf == p1 {
+        return Err(Error::Degenerate {
+            what: "inflection rule",
+            reason: "the split point is an end of the piece",
+        });
+    }
+    let mut arcs = Vec::with_capacity(2);
+    for (a, b, ta, tb) in [(p0, pf, t0, tf), (pf, p1, tf, t1)] {
+        let half = Frame::new(a, b);
+        let (ha, hb) = (half.angle(ta), half.angle(tb));
+        let kind = classify(ha, hb);
+        if kind == PieceKind::Inflection {
+            return Err(Error::Degenerate {
+                what: "inflection rule",
+                reason: "a half of the split piece needs an inflection again",
+            });
+        }
+        arcs.push(half.arc(kind, ha, hb)?);
+    }
+    Ok((PieceKind::Inflection, arcs))
+}
+
+/// The local frame of a chord (seed 004 Fig. 3).
+struct Frame {
+    origin: Vector2<f64>,
+    ex: Vector2<f64>,
+    ey: Vector2<f64>,
+    d: f64,
+}
+
+impl Frame {
+    fn new(p0: Vector2<f64>, p1: Vector2<f64>) -> Self {
+        let chord = p1 - p0;
+        let length = hypot(chord);
+        let ex = chord / length;
+        Self {
+            origin: p0 + chord * 0.5,
+            ex,
+            ey: Vector2::new(-ex.y, ex.x),
+            d: 0.5 * length,
+        }
+    }
+
+    /// The angle of the unit vector `t` from the chord direction.
+    fn angle(&self, t: Vector2<f64>) -> f64 {
+        t.dot(&self.ey).atan2(t.dot(&self.ex))
+    }
+
+    /// The arc of a non-inflection piece, checked to stay within the coordinate limit.
+    fn arc(&self, kind: PieceKind, phi_a: f64, phi_b: f64) -> Result<Arc> {
+        let (sigma, straight) = match kind {
+            PieceKind::Standard => (1.0, false),
+            PieceKind::Reflected => (-1.0, false),
+            _ => (1.0, true),
+        };
+        let (phi_a, phi_b) = if straight {
+            (0.0, 0.0)
+        } else {
+            (sigma * phi_a, sigma * phi_b)
+        };
+        // every point lies on a circle through both ends centred at (0, c), c between the
+        // end circles' cᵢ = d cot φᵢ in magnitude (c(α) is monotone): within |c| + √(c² + d²)
+        // = d (1 + |cos φ|)/|sin φ| of the midpoint
+        let reach_of = |phi: f64| self.d * ((1.0 + phi.cos().abs()) / phi.sin().abs());
+        let reach = if straight {
+            self.d
+        } else {
+            reach_of(phi_a).max(reach_of(phi_b))
+        };
+        for c in self.origin.iter() {
+            crate::error::derived_coordinate("Angular spline piece extent", c.abs() + reach)?;
+        }
+        Ok(Arc {
+            origin: self.origin,
+            ex: self.ex * self.d,
+            ey: self.ey * (sigma * self.d),
+            phi_a,
+            phi_b,
+            straight,
+        })
+    }
+}
+
+impl ParametricCurve<2> for AngularSpline {
+    /// `C(u)` on piece `j = ⌊u⌋` at `s = u − j` ([`AngularSpline::eval_piece`]); the right end
+    /// belongs to the last piece. Outside the domain the curve stays at its end points (an
+    /// Angular piece does not extrapolate: its formula is only valid for `s ∈ [0, 1]`).
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> Vector2<D> {
+        let (a, b) = self.domain();
+        let x = u.re();
+        if x.is_nan() || x <= a {
+            return self.eval_in(0, if x < a { D::zero() } else { u });
+        }
+        let j = (x.floor() as usize).min(self.pieces() - 1);
+        let s = if x > b { D::one() } else { u - j as f64 };
+        self.eval_in(j, s)
+    }
+
+    /// `[0, m − 3]`.
+    fn domain(&self) -> (f64, f64) {
+        (0.0, self.pieces() as f64)
+    }
+}
