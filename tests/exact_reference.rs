@@ -1359,7 +1359,7 @@ impl SplineScales {
                 rho = rho.max((a[n - 1] + end.amax()) / h[n - 1]);
             }
             EndCondition::Natural => {}
-            EndCondition::Periodic | EndCondition::Anticyclic => {
+            EndCondition::Periodic | EndCondition::Cyclic | EndCondition::Anticyclic => {
                 rho = rho.max((a[0] + a[n - 1]) / (h[0] + h[n - 1]));
             }
         }
@@ -1394,7 +1394,7 @@ struct SplineCase<const N: usize> {
 /// Abscissae `x₀ < … < x_n`, `n = 2 … 8` intervals, gaps as the knot gaps (down to 1e-9
 /// relative), on the scales of [`SCALES`]; values random in `[−1, 1]` or smooth
 /// (`sin(3u + 1)` of the relative position), times 1e-3, 1 or 1e3; end condition random
-/// (clamped slopes of the data's size over the width); periodic data get `y_n = y₀` exactly.
+/// (clamped slopes of the data's size over the width); periodic data get `y_n = y₀` exactly, cyclic data keep their ends.
 fn spline_case<const N: usize>() -> impl Strategy<Value = SplineCase<N>> {
     (
         vec(raw_gap(), 2..=8),
@@ -1402,7 +1402,7 @@ fn spline_case<const N: usize>() -> impl Strategy<Value = SplineCase<N>> {
         0usize..3,
         any::<bool>(),
         vec(-1.0f64..1.0, 9 * N),
-        0u8..4,
+        0u8..5,
         vec(-1.0f64..1.0, 2 * N),
         vec(0.0f64..1.0, 6),
         any::<u64>(),
@@ -1449,6 +1449,7 @@ fn spline_case<const N: usize>() -> impl Strategy<Value = SplineCase<N>> {
                         y[n] = y[0];
                         EndCondition::Periodic
                     }
+                    3 => EndCondition::Cyclic,
                     _ => EndCondition::Anticyclic,
                 };
                 Some(SplineCase {
@@ -1474,7 +1475,8 @@ fn exact_spline_of<const N: usize>(sc: &SplineCase<N>) -> ExactSpline {
             end.iter().map(|&c| q(c)).collect(),
         ),
         EndCondition::Natural => ExactEnd::Natural,
-        EndCondition::Periodic => ExactEnd::Periodic,
+        // the exact construction imposes s′, s″ equal at the ends, nothing on the end values
+        EndCondition::Periodic | EndCondition::Cyclic => ExactEnd::Periodic,
         EndCondition::Anticyclic => ExactEnd::Anticyclic,
     };
     ExactSpline::new(&xq, &yq, &end)

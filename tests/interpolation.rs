@@ -146,11 +146,12 @@ fn random_data(rng: &mut Rng, n: usize) -> (Vec<f64>, Vec<f64>) {
     (x, y)
 }
 
-fn conditions() -> [EndCondition<1>; 4] {
+fn conditions() -> [EndCondition<1>; 5] {
     [
         EndCondition::clamped(0.7, -1.3),
         EndCondition::Natural,
         EndCondition::Periodic,
+        EndCondition::Cyclic,
         EndCondition::Anticyclic,
     ]
 }
@@ -161,7 +162,7 @@ fn end_residuals(s: &CubicSpline<1>) -> (f64, f64) {
     match s.end_condition() {
         EndCondition::Clamped { start, end } => ((d1a - start.x).abs(), (d1b - end.x).abs()),
         EndCondition::Natural => (d2a.abs(), d2b.abs()),
-        EndCondition::Periodic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
+        EndCondition::Periodic | EndCondition::Cyclic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
         EndCondition::Anticyclic => ((d1a + d1b).abs(), (d2a + d2b).abs()),
     }
 }
@@ -251,6 +252,63 @@ fn seed004_sinusoid_half_period_suits_anticyclic_ends() {
         anti < natural / 5.0,
         "anticyclic {anti:e} vs natural {natural:e}"
     );
+}
+
+#[test]
+fn cyclic_ends_on_open_data_fit_one_period_of_a_sinusoid() {
+    // seed 004's CYCLIC for "a curve that repeats at intervals": one period of
+    // (t, sin t) as a parametric curve, end points 2π apart. Periodic refuses it; cyclic
+    // makes P′ and P″ equal at the ends and, on closed data, is the periodic spline.
+    use std::f64::consts::TAU;
+    let pts: Vec<Vector2<f64>> = (0..=6)
+        .map(|k| {
+            let t = TAU * k as f64 / 6.0;
+            Vector2::new(t, t.sin())
+        })
+        .collect();
+    assert!(matches!(
+        CubicSpline::curve(&pts, Parametrization::ChordLength, EndCondition::Periodic),
+        Err(splinelab::Error::PeriodicEndsMismatch { .. })
+    ));
+    let s = CubicSpline::curve(&pts, Parametrization::ChordLength, EndCondition::Cyclic)
+        .expect("open data");
+    let [d1a, d2a, d1b, d2b] = s.end_derivatives();
+    assert!((d1a - d1b).amax() <= 1e-12 && (d2a - d2b).amax() <= 1e-12);
+    let t = Parametrization::ChordLength.parameters(&pts).unwrap();
+    for (ti, p) in t.iter().zip(&pts) {
+        assert_eq!(s.point(*ti), *p);
+    }
+    // closer to the sinusoid than the relaxed ends, which force P″ = 0 there
+    let err = |end| {
+        let c = CubicSpline::curve(&pts, Parametrization::ChordLength, end).unwrap();
+        c.polyline(601)
+            .unwrap()
+            .iter()
+            .map(|q| (q.y - q.x.sin()).abs())
+            .fold(0.0, f64::max)
+    };
+    let (cyclic, relaxed) = (err(EndCondition::Cyclic), err(EndCondition::Natural));
+    assert!(cyclic < relaxed, "cyclic {cyclic:e} vs relaxed {relaxed:e}");
+    // on closed data the two are one spline
+    let closed: Vec<Vector2<f64>> = (0..=8)
+        .map(|k| {
+            let a = TAU * k as f64 / 8.0;
+            Vector2::new(2.0 * a.cos(), a.sin())
+        })
+        .collect();
+    let mut exact = closed.clone();
+    exact[8] = exact[0];
+    let p =
+        CubicSpline::curve(&exact, Parametrization::ChordLength, EndCondition::Periodic).unwrap();
+    let c = CubicSpline::curve(&exact, Parametrization::ChordLength, EndCondition::Cyclic).unwrap();
+    for (a, b) in p
+        .polyline(200)
+        .unwrap()
+        .iter()
+        .zip(c.polyline(200).unwrap())
+    {
+        assert!((a - b).amax() <= 1e-15);
+    }
 }
 
 #[test]

@@ -502,6 +502,7 @@ fn end1() -> impl Strategy<Value = EndCondition<1>> {
     prop_oneof![
         Just(EndCondition::Natural),
         Just(EndCondition::Periodic),
+        Just(EndCondition::Cyclic),
         Just(EndCondition::Anticyclic),
         (num(), num()).prop_map(|(a, b)| EndCondition::clamped(a, b)),
         (ordinary(), ordinary()).prop_map(|(a, b)| EndCondition::clamped(a, b)),
@@ -512,6 +513,7 @@ fn end2() -> impl Strategy<Value = EndCondition<2>> {
     prop_oneof![
         Just(EndCondition::Natural),
         Just(EndCondition::Periodic),
+        Just(EndCondition::Cyclic),
         Just(EndCondition::Anticyclic),
         (prop::array::uniform2(num()), prop::array::uniform2(num())).prop_map(|(a, b)| {
             EndCondition::Clamped {
@@ -1049,7 +1051,9 @@ fn check_end_conditions<const N: usize>(
             (amax(&(da[1] - start)).max(amax(&(db[1] - end))), 0.0)
         }
         EndCondition::Natural => (0.0, amax(&da[2]).max(amax(&db[2]))),
-        EndCondition::Periodic => (amax(&(da[1] - db[1])), amax(&(da[2] - db[2]))),
+        EndCondition::Periodic | EndCondition::Cyclic => {
+            (amax(&(da[1] - db[1])), amax(&(da[2] - db[2])))
+        }
         EndCondition::Anticyclic => (amax(&(da[1] + db[1])), amax(&(da[2] + db[2]))),
     };
     prop_assert!(

@@ -246,7 +246,9 @@ pub fn cubic_spline<const N: usize>(
     let conditions = match end {
         EndCondition::Clamped { start, end } => vec![at(First, a, start), at(First, b, end)],
         EndCondition::Natural => vec![at(Second, a, zero), at(Second, b, zero)],
-        EndCondition::Periodic => vec![link(First, 1.0), link(Second, 1.0)],
+        EndCondition::Periodic | EndCondition::Cyclic => {
+            vec![link(First, 1.0), link(Second, 1.0)]
+        }
         EndCondition::Anticyclic => vec![link(First, -1.0), link(Second, -1.0)],
     };
     interpolate(basis, x, y, &conditions)

@@ -25,6 +25,11 @@ pub enum EndCondition<const N: usize> {
     /// `s′(x₀) = s′(x_n)`, `s″(x₀) = s″(x_n)`, for data with `y₀ = y_n` (seed 001 "periodica";
     /// seed 004 *cyclic*).
     Periodic,
+    /// `s′(x₀) = s′(x_n)`, `s″(x₀) = s″(x_n)` for data whose ends need not coincide: seed
+    /// 004's *cyclic* as the paper uses it, "for pieces of a curve that repeats at intervals"
+    /// (one period of a sinusoid, whose end points differ; spec decision A7). The moment
+    /// equations are those of [`EndCondition::Periodic`]; only the end values are left alone.
+    Cyclic,
     /// `s′(x₀) = −s′(x_n)`, `s″(x₀) = −s″(x_n)` (seed 004 *anticyclic*, `P′₁ = −P′ₙ`,
     /// `P″₁ = −P″ₙ`); the data ends are free.
     Anticyclic,
@@ -47,6 +52,7 @@ impl<const N: usize> EndCondition<N> {
             EndCondition::Clamped { .. } => "clamped",
             EndCondition::Natural => "natural (relaxed)",
             EndCondition::Periodic => "periodic (cyclic)",
+            EndCondition::Cyclic => "cyclic (open ends)",
             EndCondition::Anticyclic => "anticyclic",
         }
     }
@@ -55,7 +61,7 @@ impl<const N: usize> EndCondition<N> {
     fn min_points(&self) -> usize {
         match self {
             EndCondition::Clamped { .. } | EndCondition::Natural => 2,
-            EndCondition::Periodic | EndCondition::Anticyclic => 3,
+            EndCondition::Periodic | EndCondition::Cyclic | EndCondition::Anticyclic => 3,
         }
     }
 }
@@ -395,7 +401,7 @@ pub(crate) fn check_spline_data<const N: usize>(
                 });
             }
         }
-        EndCondition::Natural | EndCondition::Anticyclic => {}
+        EndCondition::Natural | EndCondition::Cyclic | EndCondition::Anticyclic => {}
     }
     Ok(widest)
 }
@@ -461,15 +467,16 @@ fn moments<const N: usize>(
             };
             largest = solve(row, rhs, None, &mut m)?;
         }
-        EndCondition::Periodic | EndCondition::Anticyclic => {
-            // unknowns M₀ … M_{n−1}; M_n = σM₀ with σ = +1 (periodic) or −1 (anticyclic).
+        EndCondition::Periodic | EndCondition::Cyclic | EndCondition::Anticyclic => {
+            // unknowns M₀ … M_{n−1}; M_n = σM₀ with σ = +1 (periodic, cyclic) or −1
+            // (anticyclic); the end values enter only through δ₀ and δ_{n−1}.
             // Row 0 from s′(x₀) = σ s′(x_n):
             // 2(h₀ + h_{n−1})M₀ + h₀M₁ + σh_{n−1}M_{n−1} = 6(δ₀ − σδ_{n−1});
             // node n−1's equation refers to M_n = σM₀: a corner instead of its sup entry.
-            let sigma = if matches!(end, EndCondition::Periodic) {
-                1.0
-            } else {
+            let sigma = if matches!(end, EndCondition::Anticyclic) {
                 -1.0
+            } else {
+                1.0
             };
             let row = |i: usize| {
                 if i == 0 {

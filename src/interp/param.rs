@@ -18,6 +18,14 @@ pub enum Parametrization {
     Centripetal,
 }
 
+/// Chord length, Rogers & Adams' choice and seed 004's default for parametric cubic splines
+/// (spec decision A6: the paper does not state one).
+impl Default for Parametrization {
+    fn default() -> Self {
+        Parametrization::ChordLength
+    }
+}
+
 impl Parametrization {
     /// All variants.
     pub const ALL: [Parametrization; 3] = [

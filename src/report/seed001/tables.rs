@@ -309,7 +309,7 @@ pub fn cubic_spline_ends() -> Result<Table> {
         let (r1, r2) = match end {
             EndCondition::Clamped { start, end } => ((d1a - start.x).abs(), (d1b - end.x).abs()),
             EndCondition::Natural => (d2a.abs(), d2b.abs()),
-            EndCondition::Periodic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
+            EndCondition::Periodic | EndCondition::Cyclic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
             EndCondition::Anticyclic => ((d1a + d1b).abs(), (d2a + d2b).abs()),
         };
         name.push(end.label());
