@@ -71,6 +71,7 @@ pub use bezier::patch::BezierPatch;
 pub use blending::functions::{lagrange4, printed_setbval, uniform_bspline4, Blending};
 pub use bspline::basis::BSplineBasis;
 pub use bspline::curve::BSplineCurve;
+pub use bspline::fit::{fit_bspline, BSplineFit};
 pub use bspline::knots::{EndKnots, KnotVector};
 pub use curve::{signed_curvature, ParametricCurve};
 pub use domain::{Interval, Partition, Rect};

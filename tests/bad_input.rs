@@ -62,11 +62,11 @@ use splinelab::metrics::ErrorAccumulator;
 use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
-    de_casteljau_recursive, de_casteljau_surface, guide_point, hermite_basis, matlab_norm,
-    partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors, tabulate,
-    uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
-    CardinalSpline, CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface, Grid,
-    HermiteCurve, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NodeFamily,
+    de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point, hermite_basis,
+    matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors,
+    tabulate, uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch,
+    Blending, CardinalSpline, CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface,
+    Grid, HermiteCurve, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NodeFamily,
     NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation,
     PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
 };
@@ -4777,6 +4777,97 @@ fn seed004_cases() -> Vec<Case> {
             expect_err!(
                 AngularSpline::closed(&vec![v2(0.0, 0.0); MAX_ELEMENTS]),
                 Error::TooLarge { .. }
+            )
+        }),
+        case("seed004::bspline_order_one", || {
+            expect_err!(
+                BSplineCurve::with_order(four_points(), 1),
+                Error::DegreeTooLow { .. }
+            )
+        }),
+        case("seed004::bspline_order_above_count", || {
+            expect_err!(
+                BSplineCurve::with_order(four_points(), 5),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::bspline_order_empty", || {
+            expect_err!(
+                BSplineCurve::<2>::with_order(vec![], 2),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::bspline_order_nan", || {
+            let mut p = four_points();
+            p[1].x = f64::NAN;
+            expect_err!(BSplineCurve::with_order(p, 3), Error::NonFinite { .. })
+        }),
+        case("seed004::bspline_order_huge", || {
+            let mut p = four_points();
+            p[1].x = 2.0 * MAX_COORDINATE;
+            expect_err!(
+                BSplineCurve::with_order(p, 3),
+                Error::CoordinateTooLarge { .. }
+            )
+        }),
+        case("seed004::fit_fewer_samples_than_vertices", || {
+            expect_err!(
+                fit_bspline(&four_points(), 5, 3, 2),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::fit_one_sample", || {
+            expect_err!(
+                fit_bspline(&four_points()[..1], 1, 2, 2),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::fit_bad_order", || {
+            expect_err!(
+                fit_bspline(&four_points(), 3, 4, 2),
+                Error::TooFewPoints { .. }
+            )
+        }),
+        case("seed004::fit_repeated_samples", || {
+            let p = vec![v2(0.0, 0.0), v2(1.0, 0.0), v2(1.0, 0.0), v2(2.0, 1.0)];
+            expect_err!(fit_bspline(&p, 3, 2, 2), Error::RepeatedPoint { .. })
+        }),
+        case("seed004::fit_undetermined_vertex", || {
+            let mut p: Vec<Vector2<f64>> = (0..30).map(|i| v2(i as f64 * 1e-3, 0.0)).collect();
+            p.push(v2(50.0, 1.0));
+            expect_err!(fit_bspline(&p, 10, 4, 2), Error::IllConditioned { .. })
+        }),
+        case("seed004::fit_huge_coordinates", || {
+            let m = MAX_COORDINATE / 2.0;
+            let p = vec![
+                v2(-m, 0.0),
+                v2(0.0, m),
+                v2(m, 0.0),
+                v2(0.0, -m),
+                v2(-m * 0.9, 0.1),
+            ];
+            match fit_bspline(&p, 4, 3, 5) {
+                Ok(f) => {
+                    ensure!(
+                        finite_vecs(f.curve.points()) && f.max_distance.is_finite(),
+                        "{:?}",
+                        f.curve.points()
+                    );
+                    Ok(())
+                }
+                Err(
+                    Error::Overflow { .. }
+                    | Error::CoordinateTooLarge { .. }
+                    | Error::IllConditioned { .. },
+                ) => Ok(()),
+                Err(e) => Err(format!("unexpected {e}")),
+            }
+        }),
+        risky("seed004::fit_too_large", || {
+            let p = vec![v2(0.0, 0.0), v2(1.0, 1.0)];
+            expect_err!(
+                fit_bspline(&p, usize::MAX, 2, 1),
+                Error::TooFewPoints { .. } | Error::TooLarge { .. }
             )
         }),
         case("seed004::guide_repeated", || {

@@ -81,13 +81,14 @@ use splinelab::nurbs::MIN_WEIGHT_RATIO;
 use splinelab::tensor::{Net, NET_LIMIT};
 use splinelab::{
     bernstein3, bernstein_all, bernstein_sum, compare, convergence, de_casteljau,
-    de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, guide_point, hermite_basis,
-    lagrange4, matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval,
-    report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4, uniform_spline_errors,
-    AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending, CardinalSpline, CubicSpline,
-    EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch, HermiteSpline, Interval,
-    KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization, Partials, Partition,
-    PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
+    de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point,
+    hermite_basis, lagrange4, matlab_norm, partials_on_grid, partials_on_grid_into,
+    printed_setbval, report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4,
+    uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
+    CardinalSpline, CubicSpline, EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch,
+    HermiteSpline, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization,
+    Partials, Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere,
+    SurfaceDerivatives, Torus,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -1884,6 +1885,28 @@ proptest! {
                         }
                     }
                 }
+            }
+            Ok(())
+        })?;
+    }
+
+    /// `BSplineCurve::with_order` and `fit_bspline`: the curve starts and ends at the end
+    /// vertices; a fit is finite and its reported distance is what its samples measure.
+    #[test]
+    fn bspline_order_and_fit(pts in points::<2>(0..=12), order in 0usize..8, count in 0usize..8, fr in fracs()) {
+        guard(|| {
+            if let Ok(c) = BSplineCurve::with_order(pts.clone(), order) {
+                prop_assert!(order >= 2 && order <= pts.len());
+                let (a, b) = c.domain();
+                check_curve("BSplineCurve::with_order", &c, &domain_params(a, b, &fr, &[]), 5)?;
+                let scale = max_norm(&pts);
+                prop_assert!(amax(&(c.point(a) - pts[0])) <= 1e-12 * scale + FLOOR);
+                prop_assert!(amax(&(c.point(b) - pts[pts.len() - 1])) <= 1e-12 * scale + FLOOR);
+            }
+            if let Ok(f) = fit_bspline(&pts, count, order, 3) {
+                prop_assert!(all_finite(f.curve.points()) && f.max_distance.is_finite(), "fit {:?}", f.curve.points());
+                prop_assert_eq!(f.curve.points().len(), count);
+                prop_assert_eq!(f.curve.points()[0], pts[0]);
             }
             Ok(())
         })?;
