@@ -57,6 +57,7 @@ pub mod prelude;
 #[cfg(feature = "report")]
 pub mod report;
 pub mod seeds;
+pub mod shapes;
 pub mod study;
 pub mod surface;
 pub mod tensor;
@@ -88,10 +89,12 @@ pub use interp::angular::{
 pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;
+pub use interp::methods::{CubicEnd, Interpolant, Method};
 pub use interp::param::Parametrization;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
 pub use metrics::{compare, matlab_norm, CoordErrors};
 pub use nurbs::NurbsCurve;
+pub use shapes::Shape;
 pub use study::{
     convergence, spline_errors, uniform_spline_errors, ConvergenceOrders, ConvergenceRow,
     PatchEvaluation,

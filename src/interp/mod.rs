@@ -6,6 +6,7 @@ pub mod cardinal;
 pub mod collocation;
 pub mod cubic;
 pub mod linear;
+pub mod methods;
 pub mod param;
 pub mod polynomial;
 

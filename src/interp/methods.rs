@@ -1,0 +1,190 @@
+//! Seed 004's interpolation methods behind one type, so a comparison can run every method on
+//! every point set: the Angular spline, the cardinal spline with its `a`, the parametric cubic
+//! spline with the paper's three end conditions, the B-spline of order `k` (its points are the
+//! control polygon) and linear interpolation.
+//!
+//! Closed curves are made as the paper makes them (spec decision A5): the Angular and cardinal
+//! splines repeat the first three points, the cubic spline, B-spline and polygon repeat the
+//! first point; [`Method::counted_points`] counts the repeats as the paper's Table I does.
+
+use crate::bspline::curve::BSplineCurve;
+use crate::curve::ParametricCurve;
+use crate::error::Result;
+use crate::interp::angular::AngularSpline;
+use crate::interp::cardinal::CardinalSpline;
+use crate::interp::cubic::{CubicSpline, EndCondition};
+use crate::interp::linear::PiecewiseLinear;
+use crate::interp::param::Parametrization;
+use nalgebra::Vector2;
+use num_dual::DualNum;
+
+/// The end conditions seed 004 used for the cubic spline (clamped needs end tangents a
+/// draughtsman cannot give, so the paper left it out).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CubicEnd {
+    /// `P″ = 0` at both ends (natural).
+    Relaxed,
+    /// `P′`, `P″` equal at the ends: periodic on a closed curve, [`EndCondition::Cyclic`] on
+    /// open data.
+    Cyclic,
+    /// `P′₁ = −P′ₙ`, `P″₁ = −P″ₙ`.
+    Anticyclic,
+}
+
+impl CubicEnd {
+    /// The three, in the paper's order.
+    pub const ALL: [CubicEnd; 3] = [CubicEnd::Relaxed, CubicEnd::Cyclic, CubicEnd::Anticyclic];
+
+    /// The paper's name.
+    pub fn label(self) -> &'static str {
+        match self {
+            CubicEnd::Relaxed => "relaxed",
+            CubicEnd::Cyclic => "cyclic",
+            CubicEnd::Anticyclic => "anticyclic",
+        }
+    }
+
+    /// The spline end condition for closed or open data.
+    pub fn condition(self, closed: bool) -> EndCondition<2> {
+        match (self, closed) {
+            (CubicEnd::Relaxed, _) => EndCondition::Natural,
+            (CubicEnd::Cyclic, true) => EndCondition::Periodic,
+            (CubicEnd::Cyclic, false) => EndCondition::Cyclic,
+            (CubicEnd::Anticyclic, _) => EndCondition::Anticyclic,
+        }
+    }
+}
+
+/// One of seed 004's methods with its parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// The Angular spline (no parameter).
+    Angular,
+    /// The cardinal spline with tangents `a (Pᵢ₊₁ − Pᵢ₋₁)`.
+    Cardinal {
+        /// The parameter `a > 0`.
+        a: f64,
+    },
+    /// The parametric cubic spline, chord-length parameters.
+    Cubic {
+        /// The end condition.
+        end: CubicEnd,
+    },
+    /// The B-spline of order `k` on open uniform knots through the points as its polygon.
+    BSpline {
+        /// The order `k ≥ 2`.
+        order: usize,
+    },
+    /// The polygon through the points.
+    Linear,
+}
+
+impl Method {
+    /// A label for figures and tables (`Cardinal (a = 0.83)`, `Cubic relaxed`, …).
+    pub fn label(&self) -> String {
+        match *self {
+            Method::Angular => "Angular".into(),
+            Method::Cardinal { a } => format!("Cardinal (a = {a})"),
+            Method::Cubic { end } => format!("Cubic {}", end.label()),
+            Method::BSpline { order } => format!("B-spline order {order}"),
+            Method::Linear => "Linear".into(),
+        }
+    }
+
+    /// The method's family name (`Angular`, `Cardinal`, `Cubic`, `B-spline`, `Linear`).
+    pub fn family(&self) -> &'static str {
+        match self {
+            Method::Angular => "Angular",
+            Method::Cardinal { .. } => "Cardinal",
+            Method::Cubic { .. } => "Cubic",
+            Method::BSpline { .. } => "B-spline",
+            Method::Linear => "Linear",
+        }
+    }
+
+    /// The points of `points` as the method uses them: closed curves get the paper's repeats.
+    pub fn prepared(&self, points: &[Vector2<f64>], closed: bool) -> Vec<Vector2<f64>> {
+        let mut all = points.to_vec();
+        if closed {
+            let repeats = match self {
+                Method::Angular | Method::Cardinal { .. } => 3,
+                _ => 1,
+            };
+            all.extend(points.iter().take(repeats).copied());
+        }
+        all
+    }
+
+    /// How many points the paper counts for `distinct` points: the repeats of a closed curve
+    /// included (a closed Angular circle through 3 points is "6 points").
+    pub fn counted_points(&self, distinct: usize, closed: bool) -> usize {
+        match (self, closed) {
+            (_, false) => distinct,
+            (Method::Angular | Method::Cardinal { .. }, true) => distinct + 3,
+            (_, true) => distinct + 1,
+        }
+    }
+
+    /// The curve of the method through (or, for the B-spline, guided by) `points`, closed as
+    /// the paper closes curves when `closed`.
+    ///
+    /// # Errors
+    /// The errors of the method's constructor ([`AngularSpline::try_new`],
+    /// [`CardinalSpline::try_new`], [`CubicSpline::curve`], [`BSplineCurve::with_order`],
+    /// [`PiecewiseLinear::curve`]).
+    pub fn curve(&self, points: &[Vector2<f64>], closed: bool) -> Result<Interpolant> {
+        let all = self.prepared(points, closed);
+        Ok(match *self {
+            Method::Angular => Interpolant::Angular(AngularSpline::try_new(all)?),
+            Method::Cardinal { a } => Interpolant::Cardinal(CardinalSpline::try_new(all, a)?),
+            Method::Cubic { end } => Interpolant::Cubic(CubicSpline::curve(
+                &all,
+                Parametrization::ChordLength,
+                end.condition(closed),
+            )?),
+            Method::BSpline { order } => {
+                Interpolant::BSpline(BSplineCurve::with_order(all, order)?)
+            }
+            Method::Linear => {
+                Interpolant::Linear(PiecewiseLinear::curve(&all, Parametrization::ChordLength)?)
+            }
+        })
+    }
+}
+
+/// The curve a [`Method`] made.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Interpolant {
+    /// An Angular spline.
+    Angular(AngularSpline),
+    /// A cardinal spline.
+    Cardinal(CardinalSpline<2>),
+    /// A cubic spline curve.
+    Cubic(CubicSpline<2>),
+    /// A B-spline curve.
+    BSpline(BSplineCurve<2>),
+    /// A polygon.
+    Linear(PiecewiseLinear<2>),
+}
+
+impl ParametricCurve<2> for Interpolant {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vector2<D> {
+        match self {
+            Interpolant::Angular(c) => c.eval(t),
+            Interpolant::Cardinal(c) => c.eval(t),
+            Interpolant::Cubic(c) => c.eval(t),
+            Interpolant::BSpline(c) => c.eval(t),
+            Interpolant::Linear(c) => c.eval(t),
+        }
+    }
+
+    fn domain(&self) -> (f64, f64) {
+        match self {
+            Interpolant::Angular(c) => c.domain(),
+            Interpolant::Cardinal(c) => c.domain(),
+            Interpolant::Cubic(c) => c.domain(),
+            Interpolant::BSpline(c) => c.domain(),
+            Interpolant::Linear(c) => c.domain(),
+        }
+    }
+}
