@@ -83,8 +83,8 @@ pub use hermite::curve::HermiteCurve;
 pub use hermite::patch::HermitePatch;
 pub use hermite::spline_surface::HermiteSpline;
 pub use interp::angular::{
-    guide_point, AngularSpline, HermiteMidpoint, InflectionPoint, InflectionRule, MirrorMidpoint,
-    PieceKind,
+    circumcircle, guide_point, AngularSpline, HermiteMidpoint, InflectionPoint, InflectionRule,
+    MirrorMidpoint, PieceKind,
 };
 pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};

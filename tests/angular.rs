@@ -678,3 +678,21 @@ fn dual_numbers_carry_through_the_generic_evaluation() {
     let c = spline.eval(u);
     assert_eq!(c.map(|x| x.re), spline.point(1.3));
 }
+
+#[test]
+fn circumcircles_match_the_determinant_formula() {
+    let mut rng = Rng::new(13);
+    for _ in 0..500 {
+        let p: Vec<V> = (0..3)
+            .map(|_| v(rng.uniform(-5.0, 5.0), rng.uniform(-5.0, 5.0)))
+            .collect();
+        let (c, r) = splinelab::circumcircle(p[0], p[1], p[2]).expect("not collinear");
+        let expected = circumcentre(p[0], p[1], p[2]);
+        assert!((c - expected).norm() <= 1e-9 * expected.norm().max(1.0));
+        for q in &p {
+            assert!(((q - c).norm() - r).abs() <= 1e-9 * r.max(1.0));
+        }
+    }
+    assert!(splinelab::circumcircle(v(0.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)).is_none());
+    assert!(splinelab::circumcircle(v(0.0, 0.0), v(0.0, 0.0), v(2.0, 1.0)).is_none());
+}

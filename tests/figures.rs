@@ -100,9 +100,10 @@ fn every_figure_renders_png_and_svg() {
         let svg = dir.path().join(format!("figures/{}.svg", out.id));
         assert_eq!(paths, vec![png.clone(), svg.clone()]);
         let img = image::open(&png).expect("PNG decodes").to_rgb8();
-        assert_eq!(img.dimensions(), FIGURE_SIZE, "{} size", out.id);
+        let fig = report::figure(out.id).expect("builds");
+        assert_eq!(img.dimensions(), fig.size, "{} size", out.id);
         let share = ink(img.pixels().map(|p| p.0));
-        let plane = is_plane(&report::figure(out.id).expect("builds"));
+        let plane = is_plane(&fig);
         let min = if plane { MIN_INK_PLANE } else { MIN_INK };
         assert!(
             share > min,
@@ -438,4 +439,70 @@ fn the_notebooks_try_it_helpers_hold_their_claims() {
     let fig = draw::de_casteljau(&pts, &[0.2, 0.5, 0.8], "mine").expect("figure");
     assert!(ink(pixels(&fig.to_rgb().expect("draws"))) > MIN_INK_PLANE);
     assert!(draw::de_casteljau(&[], &[0.5], "none").is_err());
+}
+
+#[test]
+fn seed004_letters_and_method_comparisons_from_the_users_points() {
+    use splinelab::report::seed004::letters::letter_a;
+    use splinelab::{CubicEnd, Method};
+    for version in 1..=4 {
+        let l = letter_a(version).expect("letter");
+        assert_eq!(l.contours.len(), 2, "{}: outer contour and counter", l.name);
+        for c in &l.contours {
+            assert!(c.points.len() >= 4, "{}", l.name);
+            assert!(
+                c.points.windows(2).all(|w| w[0] != w[1]),
+                "{}: repeated points",
+                l.name
+            );
+            assert_eq!(
+                c.outline.first(),
+                c.outline.last(),
+                "{}: outline closed",
+                l.name
+            );
+            // every on-curve point lies on the outline
+            for p in &c.points {
+                let d = c
+                    .outline
+                    .iter()
+                    .map(|q| (q - p).norm())
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    d <= 1e-12,
+                    "{}: point {p:?} off the outline by {d:e}",
+                    l.name
+                );
+            }
+        }
+    }
+    assert!(letter_a(5).is_err());
+    // any user's points, any methods
+    let mine: Vec<Vector2<f64>> = (0..7)
+        .map(|k| Vector2::new(k as f64, (k as f64).sqrt()))
+        .collect();
+    let fig = draw::methods(
+        "mine",
+        &mine,
+        &[
+            (Method::Angular, mine.clone(), false),
+            (
+                Method::Cubic {
+                    end: CubicEnd::Relaxed,
+                },
+                mine.clone(),
+                false,
+            ),
+        ],
+        (1, 2),
+    )
+    .expect("draws");
+    assert!(fig.to_svg().expect("svg").contains("Angular — 7 points"));
+    assert!(draw::methods(
+        "bad",
+        &mine,
+        &[(Method::Angular, mine[..2].to_vec(), false)],
+        (1, 1)
+    )
+    .is_err());
 }

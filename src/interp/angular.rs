@@ -216,6 +216,25 @@ fn circle_tangent(a: Vector2<f64>, b: Vector2<f64>, c: Vector2<f64>) -> Vector2<
     t / hypot(t)
 }
 
+/// The circle through three points, `(centre, radius)`, or `None` when they are collinear
+/// (or two coincide): the circles `Cᵢ` of the construction, for figures and checks.
+pub fn circumcircle(
+    a: Vector2<f64>,
+    b: Vector2<f64>,
+    c: Vector2<f64>,
+) -> Option<(Vector2<f64>, f64)> {
+    // relative to a, so the determinant keeps its digits far from the origin
+    let (u, v) = (b - a, c - a);
+    let d = 2.0 * cross(u, v);
+    if d == 0.0 || !d.is_finite() {
+        return None;
+    }
+    let (uu, vv) = (u.norm_squared(), v.norm_squared());
+    let centre = Vector2::new(v.y * uu - u.y * vv, u.x * vv - v.x * uu) / d;
+    let r = hypot(centre);
+    (r.is_finite() && centre.iter().all(|x| x.is_finite())).then_some((a + centre, r))
+}
+
 /// The guide `G` before `p1` that makes the circle
 /// through `G, p1, p2` tangent at `p1` to `tangent`, oriented along it — so an Angular spline
 /// whose first points are `G, p1, p2, …` leaves `p1` along `tangent` (spec §1.7). The same

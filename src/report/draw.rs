@@ -504,6 +504,67 @@ impl Plot2d {
     }
 }
 
+/// One interpolation panel as seed 004 draws its cells: `curve` over the dashed `reference`
+/// shape, the points it was given as crosses (`polygon`: joined by a thin line, for a B-spline's
+/// control polygon), on equal axes.
+///
+/// # Errors
+/// As [`ParametricCurve::polyline`].
+pub fn interpolation<C: ParametricCurve<2> + ?Sized>(
+    title: impl Into<String>,
+    reference: &[Vector2<f64>],
+    points: &[Vector2<f64>],
+    polygon: bool,
+    curve: &C,
+) -> Result<Panel> {
+    let mut panel = Panel::new(title, "x", "y")
+        .equal()
+        .with(
+            Series::line("shape", xy(reference), crate::report::plot2d::GREY)
+                .styled(Style::Dashed)
+                .width(1),
+        )
+        .with(Series::line("curve", xy(&curve.polyline(4 * SAMPLES)?), LINE_PALETTE[0]).width(3));
+    if polygon {
+        panel = panel.with(
+            Series::line("", xy(points), crate::report::plot2d::GREY)
+                .width(1)
+                .unlabeled(),
+        );
+    }
+    Ok(panel.with(Series::line("points", xy(points), INK).styled(Style::Crosses(5))))
+}
+
+/// A comparison of interpolation methods over one shape: one [`interpolation`] panel per
+/// `(method, points, closed)`, titled with the method and its point count as the paper counts
+/// them, `layout = (rows, cols)`, one legend for all.
+///
+/// # Errors
+/// The method's construction errors; as [`ParametricCurve::polyline`].
+pub fn methods(
+    title: impl Into<String>,
+    reference: &[Vector2<f64>],
+    cases: &[(crate::Method, Vec<Vector2<f64>>, bool)],
+    layout: (usize, usize),
+) -> Result<Figure> {
+    let panels = cases
+        .iter()
+        .map(|(method, points, closed)| {
+            let curve = method.curve(points, *closed)?;
+            let counted = method.counted_points(points.len(), *closed);
+            let drawn = method.prepared(points, *closed);
+            interpolation(
+                format!("{} — {counted} points", method.label()),
+                reference,
+                &drawn,
+                matches!(method, crate::Method::BSpline { .. }),
+                &curve,
+            )
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Figure2d::new(title, panels, layout).shared_legend().into())
+}
+
 /// Several panels under one title, `rows × cols`.
 pub fn panels(title: impl Into<String>, panels: Vec<Panel>, layout: (usize, usize)) -> Figure {
     Figure2d::new(title, panels, layout).into()

@@ -26,6 +26,7 @@ pub mod render3d;
 pub mod seed000;
 pub mod seed001;
 pub mod seed003;
+pub mod seed004;
 pub mod style;
 mod supersample;
 pub mod table;
@@ -112,6 +113,7 @@ pub fn outputs() -> impl Iterator<Item = &'static Output> {
         .iter()
         .chain(seed001::OUTPUTS)
         .chain(seed003::OUTPUTS)
+        .chain(seed004::OUTPUTS)
 }
 
 /// The output with this id.

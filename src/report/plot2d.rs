@@ -43,6 +43,8 @@ pub enum Style {
     Points(u32),
     /// A solid polyline with dots at its vertices (a control polygon).
     LinePoints(u32),
+    /// Crosses of the given half-size (pixels), the paper's mark for interpolation points.
+    Crosses(u32),
 }
 
 /// One series of a panel.
@@ -133,6 +135,8 @@ pub struct Panel {
     pub log_x: bool,
     /// Logarithmic y axis (non-positive y are left out).
     pub log_y: bool,
+    /// Text placed at data coordinates `(x, y)` (its top-left corner), for labelling points.
+    pub notes: Vec<(f64, f64, String)>,
 }
 
 impl Panel {
@@ -149,7 +153,14 @@ impl Panel {
             legend: SeriesLabelPosition::UpperRight,
             log_x: false,
             log_y: false,
+            notes: Vec::new(),
         }
+    }
+
+    /// With a text label at data coordinates `(x, y)`.
+    pub fn note(mut self, x: f64, y: f64, text: impl Into<String>) -> Self {
+        self.notes.push((x, y, text.into()));
+        self
     }
 
     /// With logarithmic axes (`x`, `y`: which).
@@ -216,16 +227,19 @@ impl Figure2d {
         }
     }
 
-    /// Moves the legend entries of the first panel into a shared strip and drops every
-    /// panel's own legend (for panels showing the same series).
+    /// Moves the panels' legend entries into a shared strip (each label once, in order of
+    /// first appearance) and drops every panel's own legend (for panels showing the same
+    /// series).
     pub fn shared_legend(mut self) -> Self {
-        if let Some(first) = self.panels.first() {
-            self.legend = first
-                .series
-                .iter()
-                .filter_map(|s| s.label.clone().map(|l| (l, s.color, s.style)))
-                .collect();
+        let mut legend: Vec<(String, RGBColor, Style)> = Vec::new();
+        for s in self.panels.iter().flat_map(|p| &p.series) {
+            if let Some(l) = &s.label {
+                if !legend.iter().any(|e| &e.0 == l) {
+                    legend.push((l.clone(), s.color, s.style));
+                }
+            }
         }
+        self.legend = legend;
         for panel in &mut self.panels {
             for s in &mut panel.series {
                 s.label = None;
@@ -319,6 +333,13 @@ fn draw_legend_strip<DB: DrawingBackend>(
                         (x + LEGEND_SAMPLE / 2, y),
                         radius.max(3),
                         color.filled(),
+                    ))?;
+                }
+                Style::Crosses(radius) => {
+                    strip.draw(&Cross::new(
+                        (x + LEGEND_SAMPLE / 2, y),
+                        radius.max(3) as i32,
+                        color.stroke_width(2),
                     ))?;
                 }
                 Style::Dashed => {
@@ -491,6 +512,10 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
                 chart.draw_series(LineSeries::new(pts.clone(), stroke))?;
                 chart.draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))?
             }
+            Style::Crosses(r) => chart.draw_series(
+                pts.into_iter()
+                    .map(|p| Cross::new(p, r as i32, color.stroke_width(2))),
+            )?,
         };
         if let Some(label) = &s.label {
             labelled = true;
@@ -498,6 +523,11 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
             match s.style {
                 Style::Points(r) => {
                     anno.legend(move |(x, y)| Circle::new((x + 10, y), r.max(3), color.filled()));
+                }
+                Style::Crosses(r) => {
+                    anno.legend(move |(x, y)| {
+                        Cross::new((x + 10, y), r.max(3) as i32, color.stroke_width(2))
+                    });
                 }
                 _ => {
                     let width = s.width.max(2);
@@ -507,6 +537,14 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
                 }
             }
         }
+    }
+    let note_font = (FONT, TICK_SIZE + 1).into_font().color(&BLACK);
+    for (x, y, text) in &panel.notes {
+        chart.draw_series(std::iter::once(Text::new(
+            text.clone(),
+            (*x, *y),
+            note_font.clone(),
+        )))?;
     }
     if labelled {
         chart

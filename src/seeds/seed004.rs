@@ -291,7 +291,8 @@ pub fn polygonal_a() -> Vec<Vec<Vector2<f64>>> {
 
 /// The coastline of Sicily (`data/sicily-coastline.csv`: Natural Earth 1:10m through
 /// `world-atlas` 2.0.2, public domain; 357 points, a closed ring) in kilometres, projected
-/// equirectangularly about the mean latitude, without the repeated closing point.
+/// equirectangularly about the mean latitude and measured from the south-west corner of its
+/// bounding box, without the repeated closing point.
 pub fn coastline() -> Vec<Vector2<f64>> {
     const CSV: &str = include_str!("../../data/sicily-coastline.csv");
     const KM_PER_DEGREE: f64 = 111.195;
@@ -312,7 +313,16 @@ pub fn coastline() -> Vec<Vector2<f64>> {
     if points.len() > 1 && points[0] == points[points.len() - 1] {
         points.pop();
     }
+    // from the south-west corner of the bounding box
+    let (x0, y0) = points
+        .iter()
+        .fold((f64::INFINITY, f64::INFINITY), |(x, y), p| {
+            (x.min(p.x), y.min(p.y))
+        });
     points
+        .iter()
+        .map(|p| Vector2::new(p.x - x0, p.y - y0))
+        .collect()
 }
 
 /// Every `step`-th point of `points` (the paper's "1 in 50"), starting with the first.

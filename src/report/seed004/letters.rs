@@ -1,0 +1,173 @@
+//! The letter "a" in four versions for seed 004's Figs 9–20 (the paper's typefaces are not
+//! named; spec decision A17): the outlines of DejaVu Sans, DejaVu Serif and DejaVu Serif Italic
+//! (single-storey), read from the shipped fonts with `ttf-parser`, and the hand-made
+//! polygonal "a" of [`crate::seeds::seed004::polygonal_a`] for the version made of straight
+//! segments.
+//!
+//! A TrueType outline is a closed sequence of line and quadratic Bézier segments. The
+//! interpolation points of a contour are the segments' end points (the on-curve points,
+//! including the midpoints TrueType leaves implicit between two off-curve points) — the points
+//! a draughtsman would mark on the letter; the reference outline samples every quadratic
+//! densely.
+
+use crate::report::error::{Error, Result};
+use nalgebra::Vector2;
+
+const DEJAVU_SANS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
+const DEJAVU_SERIF: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSerif.ttf");
+const DEJAVU_SERIF_ITALIC: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSerif-Italic.ttf");
+
+/// Samples per quadratic segment of the reference outline.
+const QUAD_SAMPLES: usize = 24;
+
+/// One closed contour of a glyph, in em units (the em square is `[0, 1]²`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contour {
+    /// The on-curve points in order, without repeating the first.
+    pub points: Vec<Vector2<f64>>,
+    /// The outline sampled densely, closed (last point = first).
+    pub outline: Vec<Vector2<f64>>,
+}
+
+/// A letter: its name and contours (the outer one first).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Letter {
+    /// Which version, in words.
+    pub name: &'static str,
+    /// The closed contours.
+    pub contours: Vec<Contour>,
+}
+
+/// The four versions of the letter "a": 1 DejaVu Sans, 2 DejaVu Serif, 3 the polygonal one,
+/// 4 DejaVu Serif Italic.
+///
+/// # Errors
+/// [`Error::UnknownId`] for another version; [`Error::Figure`] if a font cannot be read.
+pub fn letter_a(version: usize) -> Result<Letter> {
+    let (name, font) = match version {
+        1 => ("DejaVu Sans", DEJAVU_SANS),
+        2 => ("DejaVu Serif", DEJAVU_SERIF),
+        3 => {
+            let contours = crate::seeds::seed004::polygonal_a()
+                .into_iter()
+                .map(|points| {
+                    let mut outline = points.clone();
+                    outline.push(points[0]);
+                    Contour { points, outline }
+                })
+                .collect();
+            return Ok(Letter {
+                name: "polygonal",
+                contours,
+            });
+        }
+        4 => ("DejaVu Serif Italic", DEJAVU_SERIF_ITALIC),
+        _ => {
+            return Err(Error::UnknownId {
+                what: "letter version (1–4)",
+                id: version.to_string(),
+            })
+        }
+    };
+    let fail = || Error::Figure {
+        name: format!("the letter a of {name}"),
+        message: "the embedded font has no readable outline of 'a'".into(),
+    };
+    let face = ttf_parser::Face::parse(font, 0).map_err(|_| fail())?;
+    let glyph = face.glyph_index('a').ok_or_else(fail)?;
+    let em = f64::from(face.units_per_em());
+    let mut builder = Outline {
+        em,
+        contours: Vec::new(),
+    };
+    face.outline_glyph(glyph, &mut builder).ok_or_else(fail)?;
+    Ok(Letter {
+        name,
+        contours: builder.contours,
+    })
+}
+
+/// Collects contours from `ttf-parser`'s outline callbacks.
+struct Outline {
+    em: f64,
+    contours: Vec<Contour>,
+}
+
+impl Outline {
+    fn point(&self, x: f32, y: f32) -> Vector2<f64> {
+        Vector2::new(f64::from(x) / self.em, f64::from(y) / self.em)
+    }
+
+    fn current(&mut self) -> &mut Contour {
+        if self.contours.is_empty() {
+            self.contours.push(Contour {
+                points: Vec::new(),
+                outline: Vec::new(),
+            });
+        }
+        let last = self.contours.len() - 1;
+        &mut self.contours[last]
+    }
+
+    fn push_on_curve(&mut self, p: Vector2<f64>) {
+        let c = self.current();
+        if c.points.last() != Some(&p) {
+            c.points.push(p);
+        }
+    }
+}
+
+impl ttf_parser::OutlineBuilder for Outline {
+    fn move_to(&mut self, x: f32, y: f32) {
+        let p = self.point(x, y);
+        self.contours.push(Contour {
+            points: vec![p],
+            outline: vec![p],
+        });
+    }
+
+    fn line_to(&mut self, x: f32, y: f32) {
+        let p = self.point(x, y);
+        self.current().outline.push(p);
+        self.push_on_curve(p);
+    }
+
+    fn quad_to(&mut self, x1: f32, y1: f32, x: f32, y: f32) {
+        let (c, p) = (self.point(x1, y1), self.point(x, y));
+        let start = *self.current().outline.last().unwrap_or(&p);
+        for k in 1..=QUAD_SAMPLES {
+            let t = k as f64 / QUAD_SAMPLES as f64;
+            let s = 1.0 - t;
+            let q = start * (s * s) + c * (2.0 * s * t) + p * (t * t);
+            self.current().outline.push(q);
+        }
+        self.push_on_curve(p);
+    }
+
+    fn curve_to(&mut self, x1: f32, y1: f32, x2: f32, y2: f32, x: f32, y: f32) {
+        let (c1, c2, p) = (self.point(x1, y1), self.point(x2, y2), self.point(x, y));
+        let start = *self.current().outline.last().unwrap_or(&p);
+        for k in 1..=QUAD_SAMPLES {
+            let t = k as f64 / QUAD_SAMPLES as f64;
+            let s = 1.0 - t;
+            let q = start * (s * s * s)
+                + c1 * (3.0 * s * s * t)
+                + c2 * (3.0 * s * t * t)
+                + p * (t * t * t);
+            self.current().outline.push(q);
+        }
+        self.push_on_curve(p);
+    }
+
+    fn close(&mut self) {
+        let c = self.current();
+        if let Some(&first) = c.outline.first() {
+            if c.outline.last() != Some(&first) {
+                c.outline.push(first);
+            }
+        }
+        if c.points.len() > 1 && c.points.last() == c.points.first() {
+            c.points.pop();
+        }
+    }
+}

@@ -1,0 +1,137 @@
+//! Seed 004, Barsi & Milanesi's comparison of interpolation methods: the Bézier and B-spline
+//! figures, the Angular spline's construction, Table I's shapes under the four methods, the
+//! cross-method experiment, the letter "a" and the Sicilian coastline.
+
+pub mod figures;
+pub mod letters;
+
+use crate::report::Output;
+
+/// Seed 004's outputs, in generation order.
+pub const OUTPUTS: &[Output] = &[
+    Output::figure(
+        "fig-seed004-bezier",
+        "Seed 004 Fig. 1: a Bézier curve and its defining polygon",
+        figures::bezier,
+    ),
+    Output::figure(
+        "fig-seed004-bspline-orders",
+        "Seed 004 Fig. 2: one polygon as B-splines of order 2 (the polygon) to n + 1 (Bézier)",
+        figures::bspline_orders,
+    ),
+    Output::figure(
+        "fig-seed004-angular-frame",
+        "Seed 004 Fig. 3: the Angular piece's local frame, circles, centres and tangents",
+        figures::angular_frame,
+    ),
+    Output::figure(
+        "fig-seed004-angular-reflection",
+        "Seed 004 Fig. 4: the Angular reflection case (guides above the chord)",
+        figures::angular_reflection,
+    ),
+    Output::figure(
+        "fig-seed004-angular-pieces",
+        "Seed 004 Fig. 5 a–f: single Angular pieces for six pairs of guides",
+        figures::angular_pieces,
+    ),
+    Output::figure(
+        "fig-seed004-cardinal-a",
+        "Seed 004: the cardinal spline's a on the 4-point circle (0.2, 0.5, 0.83, 1.2)",
+        figures::cardinal_a,
+    ),
+    Output::figure(
+        "fig-seed004-circle",
+        "Seed 004 Table I: the circle with the four methods",
+        figures::circle,
+    ),
+    Output::figure(
+        "fig-seed004-ellipse-0.7",
+        "Seed 004 Table I: the ellipse 0.7 with the four methods",
+        figures::ellipse_07,
+    ),
+    Output::figure(
+        "fig-seed004-ellipse-0.4",
+        "Seed 004 Table I: the ellipse 0.4 with the four methods",
+        figures::ellipse_04,
+    ),
+    Output::figure(
+        "fig-seed004-parabola-2",
+        "Seed 004 Table I: the parabola y = x², |x| ≤ 2, with the four methods",
+        figures::parabola_2,
+    ),
+    Output::figure(
+        "fig-seed004-parabola-1",
+        "Seed 004 Table I: the parabola y = x², |x| ≤ 1, with the four methods",
+        figures::parabola_1,
+    ),
+    Output::figure(
+        "fig-seed004-hyperbola-2",
+        "Seed 004 Table I: the hyperbola y = 2√(1 + x²) with the four methods",
+        figures::hyperbola_2,
+    ),
+    Output::figure(
+        "fig-seed004-hyperbola-0.5",
+        "Seed 004 Table I: the hyperbola y = ½√(1 + x²) with the four methods",
+        figures::hyperbola_05,
+    ),
+    Output::figure(
+        "fig-seed004-sinusoid",
+        "Seed 004 Table I: one period of the sinusoid with the four methods",
+        figures::sinusoid,
+    ),
+    Output::figure(
+        "fig-seed004-rectangle",
+        "Seed 004 Table I: the 2 : 1 rectangle with the four methods",
+        figures::rectangle,
+    ),
+    Output::figure(
+        "fig-seed004-cross-circle",
+        "Seed 004 Fig. 6: the circle's Angular points under the cardinal and the cubic",
+        figures::cross_circle,
+    ),
+    Output::figure(
+        "fig-seed004-cross-rectangle",
+        "Seed 004 Fig. 7: the rectangle's cardinal points under the Angular and the cubic",
+        figures::cross_rectangle,
+    ),
+    Output::figure(
+        "fig-seed004-cross-sinusoid",
+        "Seed 004 Fig. 8 a–b: the sinusoid's cubic points under the Angular and the cardinal",
+        figures::cross_sinusoid,
+    ),
+    Output::figure(
+        "fig-seed004-cross-parabola",
+        "Seed 004 Fig. 8 c–d: the parabola's cubic points under the Angular and the cardinal",
+        figures::cross_parabola,
+    ),
+    Output::figure(
+        "fig-seed004-letter-a-1",
+        "Seed 004 Figs 9–11: the letter a (DejaVu Sans) with Angular, cardinal, cubic",
+        figures::letter_a_1,
+    ),
+    Output::figure(
+        "fig-seed004-letter-a-2",
+        "Seed 004 Figs 12–14: the letter a (DejaVu Serif) with Angular, cardinal, cubic",
+        figures::letter_a_2,
+    ),
+    Output::figure(
+        "fig-seed004-letter-a-3",
+        "Seed 004 Figs 15–17: the polygonal letter a with Angular, cardinal, cubic",
+        figures::letter_a_3,
+    ),
+    Output::figure(
+        "fig-seed004-letter-a-4",
+        "Seed 004 Figs 18–20: the letter a (DejaVu Serif Italic) with Angular, cardinal, cubic",
+        figures::letter_a_4,
+    ),
+    Output::figure(
+        "fig-seed004-sicily-decimated",
+        "Seed 004: the Sicilian coast decimated to about 50 points, four methods",
+        figures::sicily_decimated,
+    ),
+    Output::figure(
+        "fig-seed004-sicily-chosen",
+        "Seed 004: the Sicilian coast with the paper's counts (92, 81, 84)",
+        figures::sicily_chosen,
+    ),
+];
