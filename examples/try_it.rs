@@ -5,6 +5,7 @@
 
 use splinelab::prelude::*;
 use splinelab::report::{draw, table};
+use splinelab::{guide_point, CubicEnd, Method};
 use std::path::Path;
 
 fn main() -> std::result::Result<(), splinelab::report::Error> {
@@ -71,6 +72,38 @@ fn main() -> std::result::Result<(), splinelab::report::Error> {
         "my de Casteljau construction",
     )?
     .save(dir, "de-casteljau")?;
+    // 10: one's own points with seed 004's four methods, and a guide for a given tangent
+    let mine = vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 1.2),
+        Vector2::new(2.2, 1.5),
+        Vector2::new(3.0, 0.4),
+        Vector2::new(4.1, -0.3),
+        Vector2::new(5.0, 0.6),
+        Vector2::new(6.0, 1.4),
+    ];
+    let methods = [
+        Method::Angular,
+        Method::Cardinal { a: 0.5 },
+        Method::Cubic {
+            end: CubicEnd::Relaxed,
+        },
+        Method::BSpline { order: 4 },
+    ];
+    let cases: Vec<_> = methods.iter().map(|&m| (m, mine.clone(), false)).collect();
+    draw::methods("my points, four methods", &mine, &cases, (2, 2))?.save(dir, "methods")?;
+    let angular = AngularSpline::try_new(mine.clone())?;
+    let mut steered = mine.clone();
+    steered[0] = guide_point(mine[1], mine[2], Vector2::new(0.0, 1.0))?;
+    let steered = AngularSpline::try_new(steered)?;
+    Plot2d::new("the first tangent steered by a guide point", "x", "y")
+        .equal()
+        .curve("your Angular spline", &angular)?
+        .curve("with the guide for an upward tangent", &steered)?
+        .tangents(&steered, &[0.0], 0.3)
+        .points("points", &mine)
+        .figure()
+        .save(dir, "guide-point")?;
     println!("wrote {}", dir.display());
     Ok(())
 }

@@ -696,3 +696,53 @@ fn circumcircles_match_the_determinant_formula() {
     assert!(splinelab::circumcircle(v(0.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)).is_none());
     assert!(splinelab::circumcircle(v(0.0, 0.0), v(0.0, 0.0), v(2.0, 1.0)).is_none());
 }
+
+#[test]
+fn the_fast_polyline_is_the_reference_polyline() {
+    let mut rng = Rng::new(14);
+    let mut out = Vec::new();
+    let mut worst: f64 = 0.0;
+    for case in 0..120 {
+        let p = if case % 3 == 0 {
+            // a closed ellipse through many points: long uniform runs on every arc
+            let n = 5 + (case % 40);
+            let q: Vec<V> = (0..n)
+                .map(|i| {
+                    let t = TAU * i as f64 / n as f64;
+                    v(3.0 * t.cos(), 1.2 * t.sin())
+                })
+                .collect();
+            let mut all = q.clone();
+            all.extend_from_slice(&q[..3]);
+            all
+        } else {
+            walk(&mut rng, 4 + case % 9)
+        };
+        let spline = AngularSpline::try_new(p.clone()).expect("valid");
+        for samples in [2, 3, 64, 1000, 4097] {
+            spline.polyline_into(samples, &mut out).unwrap();
+            let reference = spline.polyline(samples).unwrap();
+            assert_eq!(out.len(), reference.len());
+            let scale = scale_of(&p);
+            worst = out
+                .iter()
+                .zip(&reference)
+                .map(|(a, b)| (a - b).norm() / scale)
+                .fold(worst, f64::max);
+            for (k, (a, b)) in out.iter().zip(&reference).enumerate() {
+                assert!(
+                    (a - b).norm() <= 1e-12 * scale,
+                    "case {case}, {samples} samples, point {k}: {a:?} vs {b:?}"
+                );
+            }
+            assert_eq!(out[out.len() - 1], reference[reference.len() - 1]);
+        }
+    }
+    println!("largest difference, relative to the points' scale: {worst:e}");
+    assert!(matches!(
+        AngularSpline::try_new(walk(&mut rng, 5))
+            .unwrap()
+            .polyline_into(1, &mut out),
+        Err(Error::TooFewSamples { .. })
+    ));
+}

@@ -1871,6 +1871,16 @@ proptest! {
                 for (k, t) in c.tangents().iter().enumerate() {
                     prop_assert!(finite(t) && (t.norm() - 1.0).abs() <= 1e-12, "tangent {}: {:?}", k, t);
                 }
+                // the fast polyline is the reference polyline
+                let mut fast = Vec::new();
+                c.polyline_into(300, &mut fast).expect("300 samples");
+                let reference = c.polyline(300).expect("300 samples");
+                // relative to the curve's own extent: a piece whose end tangents point nearly
+                // backwards is a huge loop, ill-conditioned in its parameter
+                let scale = max_norm(&p).max(max_norm(&reference));
+                for (k, (a, b)) in fast.iter().zip(&reference).enumerate() {
+                    prop_assert!(finite(a) && amax(&(a - b)) <= 1e-10 * scale + FLOOR, "polyline_into point {}: {:?} vs {:?}", k, a, b);
+                }
                 for j in 0..c.pieces() {
                     if c.kinds()[j] == splinelab::PieceKind::Straight {
                         continue;

@@ -4,10 +4,12 @@ use crate::bezier::patch::BezierPatch;
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
+use crate::curve::ParametricCurve;
 use crate::domain::{linspace, Partition, Rect};
 use crate::error::Result;
 use crate::hermite::patch::HermitePatch;
 use crate::hermite::spline_surface::HermiteSpline;
+use crate::interp::angular::AngularSpline;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Error;
@@ -126,6 +128,7 @@ struct CurveInputs {
     spline_params: Vec<f64>,
     circle: NurbsCurve<2>,
     circle_params: Vec<f64>,
+    angular: AngularSpline,
 }
 
 /// Control points of the `bspline-curve` workload.
@@ -134,6 +137,8 @@ const BSPLINE_POINTS: usize = 60;
 const CURVE_PARAMS: usize = 1_000_000;
 /// Data points of the `cubic-spline-build` workload.
 const SPLINE_POINTS: usize = 1_000_000;
+/// Points of the `angular-curve` workloads' closed ellipse.
+const ANGULAR_POINTS: usize = 1000;
 /// Evaluation points of the `cubic-spline-eval` workload.
 const SPLINE_EVALS: usize = 10_000_000;
 
@@ -162,6 +167,14 @@ fn curve_inputs() -> Result<&'static CurveInputs> {
                 spline,
                 circle: NurbsCurve::circle9(Vector2::zeros(), 1.0)?,
                 circle_params: linspace(0.0, 1.0, CURVE_PARAMS),
+                angular: AngularSpline::closed(
+                    &(0..ANGULAR_POINTS)
+                        .map(|i| {
+                            let t = TAU * i as f64 / ANGULAR_POINTS as f64;
+                            Vector2::new(t.cos(), 0.5 * t.sin())
+                        })
+                        .collect::<Vec<_>>(),
+                )?,
             })
         })
         .as_ref()
@@ -211,8 +224,23 @@ fn nurbs_circle() -> Result<usize> {
     })
 }
 
+fn angular_curve() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    POINTS2.with(|buf| {
+        let mut out = buf.borrow_mut();
+        inputs.angular.polyline_into(CURVE_PARAMS, &mut out)?;
+        Ok(black_box(&*out).len())
+    })
+}
+
+fn angular_curve_pointwise() -> Result<usize> {
+    let inputs = curve_inputs()?;
+    let line = inputs.angular.polyline(CURVE_PARAMS)?;
+    Ok(black_box(line).len())
+}
+
 /// Every workload.
-pub const WORKLOADS: [Workload; 9] = [
+pub const WORKLOADS: [Workload; 11] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
@@ -257,6 +285,16 @@ pub const WORKLOADS: [Workload; 9] = [
         id: "nurbs-circle",
         description: "the 9-point NURBS circle at 1e6 parameters",
         run: nurbs_circle,
+    },
+    Workload {
+        id: "angular-curve",
+        description: "closed Angular spline through 1000 points of an ellipse, 1e6 equally spaced samples (polyline_into)",
+        run: angular_curve,
+    },
+    Workload {
+        id: "angular-curve-pointwise",
+        description: "the same 1e6 samples point by point (ParametricCurve::polyline, the reference path)",
+        run: angular_curve_pointwise,
     },
 ];
 

@@ -421,11 +421,13 @@ fn logged(panel: &Panel) -> Panel {
     p
 }
 
-/// A tick label: the value, or `10^v` on a log axis.
-fn axis_label(log: bool, v: f64) -> String {
+/// A tick label: the value, or `10^v` on a log axis; on a linear axis spanning `span`, a
+/// tick within `10⁻⁹ span` of zero is the rounding of 0 and prints as 0.
+fn axis_label(log: bool, v: f64, span: f64) -> String {
     if log {
         power_label(v)
     } else {
+        let v = if v.abs() <= 1e-9 * span { 0.0 } else { v };
         let a = v.abs();
         if a != 0.0 && !(1e-3..1e5).contains(&a) {
             format!("{v:.1e}")
@@ -494,8 +496,8 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .bold_line_style(RGBColor(215, 215, 215))
         .x_labels(7)
         .y_labels(7)
-        .x_label_formatter(&|v| axis_label(panel.log_x, *v))
-        .y_label_formatter(&|v| axis_label(panel.log_y, *v))
+        .x_label_formatter(&|v| axis_label(panel.log_x, *v, x1 - x0))
+        .y_label_formatter(&|v| axis_label(panel.log_y, *v, y1 - y0))
         .draw()?;
     let mut labelled = false;
     for s in &panel.series {
@@ -556,4 +558,18 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
             .draw()?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::axis_label;
+
+    #[test]
+    fn a_rounded_zero_tick_prints_as_zero() {
+        assert_eq!(axis_label(false, 1.1e-16, 1.3), "0");
+        assert_eq!(axis_label(false, -2e-17, 1.3), "0");
+        assert_eq!(axis_label(false, 0.2, 1.3), "0.2");
+        // a genuinely small axis keeps its small ticks
+        assert_eq!(axis_label(false, 2e-12, 1e-11), "2.0e-12");
+    }
 }

@@ -603,11 +603,13 @@ pub fn sicily_chosen() -> Result<Figure> {
                 .with(Series::line("curve", xy(&curve.polyline(3000)?), C[0])),
         );
     }
-    Ok(Figure2d::new(
-        "Sicily with the paper's counts (points evenly spaced along the coast; x, y in km)",
-        panels,
-        (3, 2),
+    Ok(Figure::from(
+        Figure2d::new(
+            "Sicily with the paper's counts (points evenly spaced along the coast; x, y in km)",
+            panels,
+            (3, 2),
+        )
+        .shared_legend(),
     )
-    .shared_legend()
-    .into())
+    .with_size(1100, 1250))
 }
