@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{Rng, EXACT, FD, FD_STEP};
+use common::{hausdorff, Rng, EXACT, FD, FD_STEP};
 use nalgebra::{Matrix2, Vector2};
 use num_dual::Dual64;
 use splinelab::interp::angular::{classify, COLLINEAR_SIN};
@@ -483,23 +483,6 @@ fn the_collinear_limit_is_the_straight_chord() {
     for x in spline.polyline(101).unwrap() {
         assert_eq!(x.y, 0.0);
     }
-}
-
-/// Distance from `x` to the polyline `line`.
-fn distance_to(line: &[V], x: V) -> f64 {
-    line.windows(2)
-        .map(|w| {
-            let (a, b) = (w[0], w[1]);
-            let t = ((x - a).dot(&(b - a)) / (b - a).norm_squared()).clamp(0.0, 1.0);
-            (x - (a + (b - a) * t)).norm()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
-/// Symmetric Hausdorff distance between two dense polylines.
-fn hausdorff(a: &[V], b: &[V]) -> f64 {
-    let one = |p: &[V], q: &[V]| p.iter().map(|&x| distance_to(q, x)).fold(0.0, f64::max);
-    one(a, b).max(one(b, a))
 }
 
 #[test]

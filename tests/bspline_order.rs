@@ -118,19 +118,7 @@ fn ellipse(ratio: f64, samples: usize) -> Vec<V> {
 
 /// Largest distance from the dense reference to the fitted curve and back (polyline distance).
 fn hausdorff_to(c: &BSplineCurve<2>, truth: &[V]) -> f64 {
-    let line = c.polyline(1500).unwrap();
-    let to = |x: V, set: &[V]| {
-        set.windows(2)
-            .map(|w| {
-                let (a, b) = (w[0], w[1]);
-                let t = ((x - a).dot(&(b - a)) / (b - a).norm_squared()).clamp(0.0, 1.0);
-                (x - (a + (b - a) * t)).norm()
-            })
-            .fold(f64::INFINITY, f64::min)
-    };
-    let one = line.iter().map(|&x| to(x, truth)).fold(0.0, f64::max);
-    let other = truth.iter().map(|&x| to(x, &line)).fold(0.0, f64::max);
-    one.max(other)
+    common::hausdorff(&c.polyline(1500).unwrap(), truth)
 }
 
 #[test]

@@ -461,6 +461,15 @@ fn seed004_letters_and_method_comparisons_from_the_users_points() {
                 "{}: outline closed",
                 l.name
             );
+            // the marked list holds every on-curve point, in order, and the controls between
+            let on: Vec<_> = c.marked.iter().filter(|m| m.1).map(|m| m.0).collect();
+            assert_eq!(on, c.points, "{}", l.name);
+            assert_eq!(
+                c.marked.iter().any(|m| !m.1),
+                version != 3,
+                "{}: off-curve controls",
+                l.name
+            );
             // every on-curve point lies on the outline
             for p in &c.points {
                 let d = c

@@ -486,16 +486,7 @@ impl AngularSpline {
     /// # Errors
     /// As [`AngularSpline::closed`].
     pub fn closed_with_rule(points: &[Vector2<f64>], rule: &dyn InflectionRule) -> Result<Self> {
-        if points.len() < 3 {
-            return Err(Error::TooFewPoints {
-                what: "closed Angular spline points",
-                needed: 3,
-                got: points.len(),
-            });
-        }
-        crate::error::size_sum("closed Angular spline points", points.len(), 3)?;
-        let mut all = points.to_vec();
-        all.extend_from_slice(&points[..3]);
+        let all = crate::interp::closed_by_three("closed Angular spline points", points)?;
         Self::with_rule(all, rule)
     }
 

@@ -96,16 +96,7 @@ impl<const N: usize> CardinalSpline<N> {
     /// # Errors
     /// [`Error::TooFewPoints`] below 3 points; the errors of [`CardinalSpline::try_new`].
     pub fn closed(points: &[SVector<f64, N>], a: f64) -> Result<Self> {
-        if points.len() < 3 {
-            return Err(Error::TooFewPoints {
-                what: "closed cardinal spline points",
-                needed: 3,
-                got: points.len(),
-            });
-        }
-        crate::error::size_sum("closed cardinal spline points", points.len(), 3)?;
-        let mut all = points.to_vec();
-        all.extend_from_slice(&points[..3]);
+        let all = crate::interp::closed_by_three("closed cardinal spline points", points)?;
         Self::try_new(all, a)
     }
 

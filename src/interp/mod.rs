@@ -23,6 +23,26 @@ use num_dual::DualNum;
 /// interpolate.
 pub const RESIDUAL_TOLERANCE: f64 = 1e-10;
 
+/// `Q₁ … Q_m, Q₁, Q₂, Q₃`: a closed curve of four-point segments as seed 004 closes it (the
+/// cardinal and Angular splines; spec decision A5).
+///
+/// # Errors
+/// [`Error::TooFewPoints`] below 3 points; [`Error::TooLarge`] if `m + 3` exceeds
+/// [`crate::error::MAX_ELEMENTS`].
+pub(crate) fn closed_by_three<T: Copy>(what: &'static str, points: &[T]) -> Result<Vec<T>> {
+    if points.len() < 3 {
+        return Err(Error::TooFewPoints {
+            what,
+            needed: 3,
+            got: points.len(),
+        });
+    }
+    crate::error::size_sum(what, points.len(), 3)?;
+    let mut all = points.to_vec();
+    all.extend_from_slice(&points[..3]);
+    Ok(all)
+}
+
 /// `max rᵢ / scale` (or `max rᵢ` when `scale = 0`), NaN-propagating.
 pub(crate) fn relative_residual(residuals: impl Iterator<Item = f64>, scale: f64) -> f64 {
     let worst = residuals.fold(0.0, |m: f64, r| if r.is_nan() || r > m { r } else { m });

@@ -1,7 +1,7 @@
 //! Shared test helpers: one tolerance policy and a deterministic random source.
 #![allow(dead_code)]
 
-use nalgebra::Vector3;
+use nalgebra::{Vector2, Vector3};
 
 /// Results that are exact up to rounding (dual numbers vs closed forms, Hermite vs Bézier):
 /// `|a − b| ≤ EXACT · max(1, |b|)`.
@@ -50,4 +50,26 @@ impl Rng {
     pub fn uniform(&mut self, a: f64, b: f64) -> f64 {
         a + (b - a) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
     }
+}
+
+/// Distance from `x` to the polyline `line` (exact point-to-segment distances): the test-side
+/// reference for curve errors.
+pub fn distance_to_polyline(line: &[Vector2<f64>], x: Vector2<f64>) -> f64 {
+    line.windows(2)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let t = ((x - a).dot(&(b - a)) / (b - a).norm_squared()).clamp(0.0, 1.0);
+            (x - (a + (b - a) * t)).norm()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Symmetric Hausdorff distance between two dense polylines, by brute force.
+pub fn hausdorff(a: &[Vector2<f64>], b: &[Vector2<f64>]) -> f64 {
+    let one = |p: &[Vector2<f64>], q: &[Vector2<f64>]| {
+        p.iter()
+            .map(|&x| distance_to_polyline(q, x))
+            .fold(0.0, f64::max)
+    };
+    one(a, b).max(one(b, a))
 }

@@ -23,8 +23,12 @@ const QUAD_SAMPLES: usize = 24;
 /// One closed contour of a glyph, in em units (the em square is `[0, 1]²`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contour {
-    /// The on-curve points in order, without repeating the first.
+    /// The on-curve points in order, without repeating the first: the interpolation points.
     pub points: Vec<Vector2<f64>>,
+    /// The outline's points as the font gives them, in order, each marked on-curve (`true`)
+    /// or off-curve (`false`, a quadratic's control point); TrueType's implied on-curve
+    /// midpoints are included as on-curve.
+    pub marked: Vec<(Vector2<f64>, bool)>,
     /// The outline sampled densely, closed (last point = first).
     pub outline: Vec<Vector2<f64>>,
 }
@@ -53,7 +57,12 @@ pub fn letter_a(version: usize) -> Result<Letter> {
                 .map(|points| {
                     let mut outline = points.clone();
                     outline.push(points[0]);
-                    Contour { points, outline }
+                    let marked = points.iter().map(|&p| (p, true)).collect();
+                    Contour {
+                        points,
+                        marked,
+                        outline,
+                    }
                 })
                 .collect();
             return Ok(Letter {
@@ -102,6 +111,7 @@ impl Outline {
         if self.contours.is_empty() {
             self.contours.push(Contour {
                 points: Vec::new(),
+                marked: Vec::new(),
                 outline: Vec::new(),
             });
         }
@@ -113,6 +123,7 @@ impl Outline {
         let c = self.current();
         if c.points.last() != Some(&p) {
             c.points.push(p);
+            c.marked.push((p, true));
         }
     }
 }
@@ -122,6 +133,7 @@ impl ttf_parser::OutlineBuilder for Outline {
         let p = self.point(x, y);
         self.contours.push(Contour {
             points: vec![p],
+            marked: vec![(p, true)],
             outline: vec![p],
         });
     }
@@ -134,6 +146,7 @@ impl ttf_parser::OutlineBuilder for Outline {
 
     fn quad_to(&mut self, x1: f32, y1: f32, x: f32, y: f32) {
         let (c, p) = (self.point(x1, y1), self.point(x, y));
+        self.current().marked.push((c, false));
         let start = *self.current().outline.last().unwrap_or(&p);
         for k in 1..=QUAD_SAMPLES {
             let t = k as f64 / QUAD_SAMPLES as f64;
@@ -146,6 +159,7 @@ impl ttf_parser::OutlineBuilder for Outline {
 
     fn curve_to(&mut self, x1: f32, y1: f32, x2: f32, y2: f32, x: f32, y: f32) {
         let (c1, c2, p) = (self.point(x1, y1), self.point(x2, y2), self.point(x, y));
+        self.current().marked.extend([(c1, false), (c2, false)]);
         let start = *self.current().outline.last().unwrap_or(&p);
         for k in 1..=QUAD_SAMPLES {
             let t = k as f64 / QUAD_SAMPLES as f64;
@@ -168,6 +182,7 @@ impl ttf_parser::OutlineBuilder for Outline {
         }
         if c.points.len() > 1 && c.points.last() == c.points.first() {
             c.points.pop();
+            c.marked.pop();
         }
     }
 }
