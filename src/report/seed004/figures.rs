@@ -277,9 +277,20 @@ pub fn shape_column(column: usize) -> Result<Figure> {
             Ok((c.method, set.points, set.closed))
         })
         .collect::<Result<Vec<_>>>()?;
+    let flagged = TABLE_I
+        .iter()
+        .find(|c| c.column == column && c.note.contains("(?)"))
+        .map(|c| {
+            format!(
+                " (printed {} \"{} (?)\" drawn with 7)",
+                c.method.label(),
+                c.points
+            )
+        })
+        .unwrap_or_default();
     draw::methods(
         format!(
-            "Seed 004, {name} ({}): the four methods with Table I's counts",
+            "Seed 004, {name} ({}): the four methods with Table I's counts{flagged}",
             shape.name()
         ),
         &shape.reference(REFERENCE)?,
