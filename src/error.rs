@@ -248,14 +248,14 @@ pub enum Error {
     },
     /// Two consecutive points coincide (a chord-based parametrization could not separate them;
     /// an Angular piece would have no chord).
-    #[error("point {index} coincides with point {prev_index}: consecutive points must be distinct", prev_index = index - 1)]
+    #[error("point {index} coincides with point {prev_index}: consecutive points must be distinct", prev_index = index.saturating_sub(1))]
     RepeatedPoint {
         /// Index of the second of the two points.
         index: usize,
     },
     /// A point returns to the one before its predecessor, `Pᵢ₊₁ = Pᵢ₋₁`: no circle passes through
     /// the three, so the Angular spline has no tangent at `Pᵢ`.
-    #[error("point {next} returns to point {prev}: no circle passes through points {prev}, {index}, {next}", prev = index - 1, next = index + 1)]
+    #[error("point {next} returns to point {prev}: no circle passes through points {prev}, {index}, {next}", prev = index.saturating_sub(1), next = index.saturating_add(1))]
     ReversedPoints {
         /// Index of the middle point `i`.
         index: usize,

@@ -135,9 +135,10 @@ impl Shape {
     /// lengths, so every corner is a sample and the polyline is the rectangle exactly.
     ///
     /// # Errors
-    /// [`Error::TooFewSamples`] below 4; [`Error::TooLarge`] beyond
-    /// [`crate::error::MAX_ELEMENTS`].
+    /// The errors of [`Shape::validated`]; [`Error::TooFewSamples`] below 4;
+    /// [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`].
     pub fn reference(&self, samples: usize) -> Result<Vec<Vector2<f64>>> {
+        self.validated()?;
         crate::error::samples("shape reference samples", samples)?;
         if samples < 4 {
             return Err(Error::TooFewSamples {
@@ -171,18 +172,20 @@ impl Shape {
     /// The rectangle's corners, counter-clockwise from `(w/2, −h/2)` (empty for the others).
     pub fn corners(&self) -> Vec<Vector2<f64>> {
         match *self {
-            Shape::Rectangle { width, height } => {
-                let (x, y) = (width / 2.0, height / 2.0);
-                vec![
-                    Vector2::new(x, -y),
-                    Vector2::new(x, y),
-                    Vector2::new(-x, y),
-                    Vector2::new(-x, -y),
-                ]
-            }
+            Shape::Rectangle { width, height } => rectangle_corners(width, height).to_vec(),
             _ => Vec::new(),
         }
     }
+}
+
+fn rectangle_corners(width: f64, height: f64) -> [Vector2<f64>; 4] {
+    let (x, y) = (width / 2.0, height / 2.0);
+    [
+        Vector2::new(x, -y),
+        Vector2::new(x, y),
+        Vector2::new(-x, y),
+        Vector2::new(-x, -y),
+    ]
 }
 
 fn check_max(what: &'static str, value: f64, max: f64) -> Result<()> {
@@ -209,7 +212,7 @@ impl ParametricCurve<2> for Shape {
             Shape::Hyperbola { b } => Vector2::new(t, (t * t + 1.0).sqrt() * b),
             Shape::Sinusoid { .. } => Vector2::new(t, t.sin()),
             Shape::Rectangle { width, height } => {
-                let corners = self.corners();
+                let corners = rectangle_corners(width, height);
                 let sides = [height, width, height, width];
                 let mut start = 0.0;
                 let x = t.re();

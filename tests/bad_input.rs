@@ -4870,6 +4870,64 @@ fn seed004_cases() -> Vec<Case> {
                 Error::TooFewPoints { .. } | Error::TooLarge { .. }
             )
         }),
+        case("seed004::shape_nan_ratio_reference", || {
+            expect_err!(
+                splinelab::Shape::Ellipse { ratio: f64::NAN }.reference(100),
+                Error::NotPositive { .. }
+            )
+        }),
+        case("seed004::shape_zero_rectangle_reference", || {
+            let r = splinelab::Shape::Rectangle {
+                width: 0.0,
+                height: 1.0,
+            };
+            expect_err!(r.reference(100), Error::NotPositive { .. })
+        }),
+        case("seed004::paper_points_invalid_shape", || {
+            let bad = splinelab::Shape::Parabola { half_width: -2.0 };
+            expect_err!(
+                splinelab::seeds::seed004::paper_points(&bad, &splinelab::Method::Angular, 5),
+                Error::NotPositive { .. }
+            )
+        }),
+        case("seed004::paper_points_tiny_counts", || {
+            for (_, shape) in splinelab::seeds::seed004::SHAPES {
+                for m in [
+                    splinelab::Method::Angular,
+                    splinelab::Method::Cardinal { a: 0.5 },
+                    splinelab::Method::Linear,
+                ] {
+                    for count in [0, 1, 2, 3] {
+                        let set = ok(splinelab::seeds::seed004::paper_points(&shape, &m, count))?;
+                        let c = m.curve(&set.points, set.closed);
+                        ensure!(
+                            c.is_ok(),
+                            "{} on {} with {count}: {}",
+                            m.label(),
+                            shape.name(),
+                            show(&c)
+                        );
+                    }
+                }
+            }
+            Ok(())
+        }),
+        case("seed004::error_messages_at_index_zero", || {
+            let text = format!(
+                "{} {}",
+                Error::RepeatedPoint { index: 0 },
+                Error::ReversedPoints { index: 0 }
+            );
+            ensure!(text.contains("point 0"), "{text}");
+            Ok(())
+        }),
+        case("seed004::method_closed_two_points", || {
+            let two = [v2(0.0, 0.0), v2(1.0, 0.0)];
+            expect_err!(
+                splinelab::Method::Angular.curve(&two, true),
+                Error::TooFewPoints { .. }
+            )
+        }),
         case("seed004::guide_repeated", || {
             expect_err!(
                 guide_point(v2(1.0, 1.0), v2(1.0, 1.0), v2(1.0, 0.0)),

@@ -486,6 +486,10 @@ fn seed004_letters_and_method_comparisons_from_the_users_points() {
         }
     }
     assert!(letter_a(5).is_err());
+    assert!(matches!(
+        splinelab::report::seed004::figures::shape_column(9),
+        Err(Error::UnknownId { .. })
+    ));
     // any user's points, any methods
     let mine: Vec<Vector2<f64>> = (0..7)
         .map(|k| Vector2::new(k as f64, (k as f64).sqrt()))

@@ -15,7 +15,7 @@
 //! then re-projected: each `tⱼ` moves by Newton steps on `(C(t) − Qⱼ)·C′(t) = 0` to the
 //! nearest point of the current curve (Hoschek's parameter correction), and the control points
 //! are solved again minimising the squared distance to each foot point's tangent line plus
-//! `w = 0.05` times the tangential part (the tangent-distance minimisation of Wang, Pottmann
+//! `w = 0.001` times the tangential part (the tangent-distance minimisation of Wang, Pottmann
 //! & Liu 2006, damped: plain parameter correction stalls, the pure tangent distance can
 //! diverge). Every step keeps the best polygon found, so the reported distance never grows.
 
@@ -91,7 +91,12 @@ pub fn fit_bspline<const N: usize>(
             got: shape.len(),
         });
     }
-    crate::error::size_product("fit matrix (samples × vertices)", shape.len(), count)?;
+    // the dense system is (N · samples) × (N · vertices)
+    crate::error::size_product(
+        "fit matrix (samples × vertices × dimension²)",
+        shape.len().saturating_mul(N),
+        count.saturating_mul(N),
+    )?;
     finite_points("fit sample", shape)?;
     // fit in units of the largest coordinate (the fit commutes with scaling), so no squared
     // distance overflows or underflows

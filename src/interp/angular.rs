@@ -281,10 +281,6 @@ fn hypot(v: Vector2<f64>) -> f64 {
     v.x.hypot(v.y)
 }
 
-fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
 /// The unit tangent at `b` of the circle through `a, b, c`, oriented from `a` through `b` to
 /// `c` (the line's direction when they are collinear); the points are distinct and `a ≠ c`.
 ///
@@ -316,7 +312,7 @@ pub fn circumcircle(
 ) -> Option<(Vector2<f64>, f64)> {
     // relative to a, so the determinant keeps its digits far from the origin
     let (u, v) = (b - a, c - a);
-    let d = 2.0 * cross(u, v);
+    let d = 2.0 * u.perp(&v);
     if d == 0.0 || !d.is_finite() {
         return None;
     }
@@ -364,7 +360,7 @@ pub fn guide_point(
         p2 - t * (2.0 * along * lc)
     } else {
         // the circle through p1 tangent to t: centre p1 + r n, n the unit normal on p2's side
-        let side = cross(t, ch);
+        let side = t.perp(&ch);
         if side.abs() <= COLLINEAR_SIN {
             return Err(Error::Degenerate {
                 what: "guide point",

@@ -119,7 +119,7 @@ impl<const N: usize> CubicSpline<N> {
     ///
     /// # Errors
     /// [`Error::CountMismatch`] unless `x` and `y` have the same length;
-    /// [`Error::TooFewPoints`] below 2 points (3 for periodic and anticyclic ends);
+    /// [`Error::TooFewPoints`] below 2 points (3 for periodic, cyclic and anticyclic ends);
     /// [`Error::NonFinite`] for NaN or infinite data; [`Error::RepeatedParameter`] or
     /// [`Error::NotIncreasing`] unless `x` strictly increases; [`Error::GapTooSmall`] for
     /// abscissae closer than `f64::MIN_POSITIVE`; [`Error::TooLarge`] beyond

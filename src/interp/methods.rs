@@ -102,27 +102,27 @@ impl Method {
         }
     }
 
+    /// How many of the first points a closed curve repeats at its end: 3 for the four-point
+    /// segments of the Angular and cardinal splines, 1 for the others; none when open.
+    fn repeats(&self, closed: bool) -> usize {
+        match (self, closed) {
+            (_, false) => 0,
+            (Method::Angular | Method::Cardinal { .. }, true) => 3,
+            (_, true) => 1,
+        }
+    }
+
     /// The points of `points` as the method uses them: closed curves get the paper's repeats.
     pub fn prepared(&self, points: &[Vector2<f64>], closed: bool) -> Vec<Vector2<f64>> {
         let mut all = points.to_vec();
-        if closed {
-            let repeats = match self {
-                Method::Angular | Method::Cardinal { .. } => 3,
-                _ => 1,
-            };
-            all.extend(points.iter().take(repeats).copied());
-        }
+        all.extend(points.iter().take(self.repeats(closed)).copied());
         all
     }
 
     /// How many points the paper counts for `distinct` points: the repeats of a closed curve
     /// included (a closed Angular circle through 3 points is "6 points").
     pub fn counted_points(&self, distinct: usize, closed: bool) -> usize {
-        match (self, closed) {
-            (_, false) => distinct,
-            (Method::Angular | Method::Cardinal { .. }, true) => distinct + 3,
-            (_, true) => distinct + 1,
-        }
+        distinct.saturating_add(self.repeats(closed))
     }
 
     /// The curve of the method through (or, for the B-spline, guided by) `points`, closed as
@@ -135,7 +135,11 @@ impl Method {
     pub fn curve(&self, points: &[Vector2<f64>], closed: bool) -> Result<Interpolant> {
         let all = self.prepared(points, closed);
         Ok(match *self {
+            Method::Angular if closed => Interpolant::Angular(AngularSpline::closed(points)?),
             Method::Angular => Interpolant::Angular(AngularSpline::try_new(all)?),
+            Method::Cardinal { a } if closed => {
+                Interpolant::Cardinal(CardinalSpline::closed(points, a)?)
+            }
             Method::Cardinal { a } => Interpolant::Cardinal(CardinalSpline::try_new(all, a)?),
             Method::Cubic { end } => Interpolant::Cubic(CubicSpline::curve(
                 &all,

@@ -135,7 +135,8 @@ pub struct Panel {
     pub log_x: bool,
     /// Logarithmic y axis (non-positive y are left out).
     pub log_y: bool,
-    /// Text placed at data coordinates `(x, y)` (its top-left corner), for labelling points.
+    /// Text placed at data coordinates `(x, y)` (its top-left corner), for labelling points;
+    /// notes do not widen the drawn range (place them among the data).
     pub notes: Vec<(f64, f64, String)>,
 }
 
@@ -412,6 +413,12 @@ fn logged(panel: &Panel) -> Panel {
             .map(|&(x, y)| (f(panel.log_x, x), f(panel.log_y, y)))
             .collect();
     }
+    p.notes = panel
+        .notes
+        .iter()
+        .filter(|(x, y, _)| (!panel.log_x || *x > 0.0) && (!panel.log_y || *y > 0.0))
+        .map(|(x, y, t)| (f(panel.log_x, *x), f(panel.log_y, *y), t.clone()))
+        .collect();
     p.x_range = panel
         .x_range
         .map(|(a, b)| (f(panel.log_x, a), f(panel.log_x, b)));

@@ -154,12 +154,16 @@ pub const CORNER_OFFSET: f64 = 0.1;
 /// its ends and extrema). B-spline vertices are fitted by least squares to the dense shape
 /// ([`fit_bspline`], A10), with the first vertex fixed at the shape's start.
 ///
-/// A count that the method cannot have on the shape (a closed Angular curve with fewer than 6)
-/// is raised to the smallest it can (the printed "5 (?)" becomes 7: the 4 axis vertices, A20).
+/// A count that the method cannot have on the shape (a closed Angular or cardinal curve with
+/// fewer than 6) becomes 4 distinct points + 3 (the printed "5 (?)" of the ellipse becomes 7:
+/// its 4 axis vertices, A20). The guided sinusoid takes its ends and the extrema between
+/// them, at most `count` points in all (its printed 6 exactly).
 ///
 /// # Errors
-/// The errors of the B-spline fit.
+/// [`crate::Error::NotPositive`] or [`crate::Error::OutOfDomain`] for an invalid shape; the
+/// errors of the B-spline fit.
 pub fn paper_points(shape: &Shape, method: &Method, count: usize) -> Result<PointSet> {
+    let shape = &shape.validated()?;
     let closed = shape.is_closed();
     let distinct = if closed {
         match method {
@@ -322,6 +326,15 @@ pub fn coastline() -> Vec<Vector2<f64>> {
     points
         .iter()
         .map(|p| Vector2::new(p.x - x0, p.y - y0))
+        .collect()
+}
+
+/// `count` points of a closed ring, evenly spaced by index from the first (the stand-in for
+/// the paper's hand-chosen coastline points).
+pub fn evenly_spaced(points: &[Vector2<f64>], count: usize) -> Vec<Vector2<f64>> {
+    let count = count.min(points.len());
+    (0..count)
+        .map(|i| points[i * points.len() / count])
         .collect()
 }
 

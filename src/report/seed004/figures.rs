@@ -267,8 +267,18 @@ pub fn cardinal_a() -> Result<Figure> {
 
 /// The four printed cells of one column of Table I, each with the paper's count and
 /// parameter and points placed by the stated rule.
+///
+/// # Errors
+/// [`crate::report::Error::UnknownId`] for a column beyond the nine; the errors of the
+/// point rules and the methods.
 pub fn shape_column(column: usize) -> Result<Figure> {
-    let (name, shape) = data::SHAPES[column];
+    let &(name, shape) =
+        data::SHAPES
+            .get(column)
+            .ok_or_else(|| crate::report::Error::UnknownId {
+                what: "Table I column (0–8)",
+                id: column.to_string(),
+            })?;
     let cases = TABLE_I
         .iter()
         .filter(|c| c.column == column)
@@ -277,17 +287,22 @@ pub fn shape_column(column: usize) -> Result<Figure> {
             Ok((c.method, set.points, set.closed))
         })
         .collect::<Result<Vec<_>>>()?;
-    let flagged = TABLE_I
+    // a printed count the method cannot have is drawn with the count the points give
+    let flagged: String = TABLE_I
         .iter()
-        .find(|c| c.column == column && c.note.contains("(?)"))
-        .map(|c| {
-            format!(
-                " (printed {} \"{} (?)\" drawn with 7)",
-                c.method.label(),
-                c.points
-            )
+        .filter(|c| c.column == column)
+        .filter_map(|c| {
+            let set = paper_points(&shape, &c.method, c.points).ok()?;
+            let drawn = c.method.counted_points(set.points.len(), set.closed);
+            (drawn != c.points).then(|| {
+                format!(
+                    " (printed {} {}, drawn with {drawn})",
+                    c.method.label(),
+                    c.points
+                )
+            })
         })
-        .unwrap_or_default();
+        .collect();
     draw::methods(
         format!(
             "Seed 004, {name} ({}): the four methods with Table I's counts{flagged}",
@@ -538,14 +553,6 @@ letter_figures! {
     letter_a_4 = 4;
 }
 
-/// `count` points of a closed ring, evenly spaced by index (the stand-in for hand-chosen
-/// points).
-fn every_nth(points: &[V], count: usize) -> Vec<V> {
-    (0..count)
-        .map(|i| points[i * points.len() / count])
-        .collect()
-}
-
 fn coast_reference() -> Vec<V> {
     let mut coast = data::coastline();
     coast.push(coast[0]);
@@ -598,7 +605,7 @@ pub fn sicily_chosen() -> Result<Figure> {
         ),
     ] {
         let distinct = count - (method.counted_points(0, true));
-        let points = every_nth(&coast, distinct);
+        let points = data::evenly_spaced(&coast, distinct);
         let curve = method.curve(&points, true)?;
         let drawn = method.prepared(&points, true);
         panels.push(draw::interpolation(
