@@ -125,6 +125,18 @@ pub const TABLE_I: [PrintedCell; 36] = [
     cell(8, bspline(2), 5),
 ];
 
+const RELAXED: Method = cubic(CubicEnd::Relaxed);
+
+/// The letter "a" figures as printed (Figs 9–20): for each of the four versions, the three
+/// "homogeneous" methods — Angular, cardinal with its `a`, relaxed cubic — with the number of
+/// points each panel's label gives.
+pub const LETTER_FIGURES: [[(Method, usize); 3]; 4] = [
+    [(Method::Angular, 19), (cardinal(0.8), 22), (RELAXED, 23)],
+    [(Method::Angular, 11), (cardinal(0.8), 12), (RELAXED, 12)],
+    [(Method::Angular, 8), (cardinal(0.0001), 8), (RELAXED, 17)],
+    [(Method::Angular, 8), (cardinal(0.7), 13), (RELAXED, 16)],
+];
+
 /// The points of one configuration: the distinct points a method is given (guides included
 /// for open shapes) and whether the method closes the curve.
 #[derive(Debug, Clone, PartialEq)]

@@ -422,51 +422,6 @@ pub fn cross_parabola() -> Result<Figure> {
     )
 }
 
-/// The paper's letter figures: the three "homogeneous" methods and their printed counts and
-/// parameters, per version (Figs 9–20).
-const LETTER_METHODS: [[(Method, usize); 3]; 4] = [
-    [
-        (Method::Angular, 19),
-        (Method::Cardinal { a: 0.8 }, 22),
-        (
-            Method::Cubic {
-                end: CubicEnd::Relaxed,
-            },
-            23,
-        ),
-    ],
-    [
-        (Method::Angular, 11),
-        (Method::Cardinal { a: 0.8 }, 12),
-        (
-            Method::Cubic {
-                end: CubicEnd::Relaxed,
-            },
-            12,
-        ),
-    ],
-    [
-        (Method::Angular, 8),
-        (Method::Cardinal { a: 0.0001 }, 8),
-        (
-            Method::Cubic {
-                end: CubicEnd::Relaxed,
-            },
-            17,
-        ),
-    ],
-    [
-        (Method::Angular, 8),
-        (Method::Cardinal { a: 0.7 }, 13),
-        (
-            Method::Cubic {
-                end: CubicEnd::Relaxed,
-            },
-            16,
-        ),
-    ],
-];
-
 /// The three panels of one method on a letter: a) the original outline with the points,
 /// b) the curve over the original, c) the curve alone.
 fn letter_panels(
@@ -516,7 +471,7 @@ fn letter_panels(
 pub fn letter(version: usize) -> Result<Figure> {
     let l = letter_a(version)?;
     let mut panels = Vec::new();
-    for (k, &(method, printed)) in LETTER_METHODS[version - 1].iter().enumerate() {
+    for (k, &(method, printed)) in data::LETTER_FIGURES[version - 1].iter().enumerate() {
         panels.extend(letter_panels(
             &l,
             method,
