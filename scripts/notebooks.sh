@@ -53,6 +53,15 @@ export EVCXR_CONFIG_DIR="$root/scripts/evcxr"
 export XDG_CACHE_HOME="$state/xdg-cache"
 export EVCXR_TMPDIR="$state/evcxr-tmp"
 mkdir -p "$XDG_CACHE_HOME" "$EVCXR_TMPDIR"
+# The kernel's crate lives in $EVCXR_TMPDIR (evcxr writes its own .cargo/config.toml there);
+# cargo also reads the config of every parent folder, so one in $state compiles splinelab
+# itself optimised — seed 004's point searches run in seconds instead of many minutes — while
+# its dependencies keep :opt 0's short compiles.
+mkdir -p "$state/.cargo"
+cat > "$state/.cargo/config.toml" <<'TOML'
+[profile.dev.package.splinelab]
+opt-level = 2
+TOML
 # The kernel dlopens code built with -C prefer-dynamic, which needs the toolchain's libstd.
 # Its relative RUNPATH is computed for cargo's deps/ folder but the library is loaded from
 # one level up, so under $HOME (e.g. ~/.cache/…) it points at /.rustup and dlopen fails;

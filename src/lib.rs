@@ -44,7 +44,9 @@ pub use num_dual;
 pub mod bezier;
 pub mod blending;
 pub mod bspline;
+pub mod comparison;
 pub mod curve;
+pub mod curve_metrics;
 pub mod domain;
 pub mod error;
 pub mod grid;
@@ -53,6 +55,7 @@ mod horner;
 pub mod interp;
 pub mod metrics;
 pub mod nurbs;
+mod parallel;
 pub mod prelude;
 #[cfg(feature = "report")]
 pub mod report;

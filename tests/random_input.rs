@@ -1933,6 +1933,59 @@ proptest! {
         })?;
     }
 
+    /// `SegmentTree`, `polyline_distances`, `Target` and `fewest_points`: typed errors or
+    /// finite results; the tree's distance equals the brute-force minimum wherever squares
+    /// cannot overflow; an accepted choice is within its tolerance.
+    #[test]
+    fn curve_metrics_and_point_choice(
+        pts in points::<2>(0..=30),
+        other in points::<2>(0..=12),
+        closed in prop::bool::weighted(0.4),
+        tol in pos(),
+        family in select(vec![0usize, 1, 2, 3, 4]),
+    ) {
+        guard(|| {
+            use splinelab::curve_metrics::{polyline_distances, SegmentTree};
+            use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target};
+            if let Ok(tree) = SegmentTree::new(&pts) {
+                let line = tree.points().to_vec();
+                for q in &other {
+                    let d = tree.distance(*q);
+                    if !q.iter().all(|x| x.abs() <= MAX_COORDINATE) {
+                        // a NaN query, or beyond the coordinate limit: a distance may be +∞
+                        continue;
+                    }
+                    prop_assert!(d.is_finite() && d >= 0.0, "distance {:e} to {:?}", d, q);
+                    let small = line.iter().chain([q]).all(|p| p.amax() <= 1e100);
+                    if small {
+                        let brute = line
+                            .windows(2)
+                            .map(|w| splinelab::curve_metrics::segment_distance(*q, w[0], w[1]))
+                            .fold(f64::INFINITY, f64::min);
+                        prop_assert_eq!(d, brute);
+                    }
+                }
+                if let Ok(dist) = polyline_distances(&other, &pts) {
+                    prop_assert!(dist.hausdorff().is_finite() && dist.hausdorff() >= 0.0, "{:?}", dist);
+                }
+            }
+            if let Ok(target) = Target::polyline(&pts, closed, tol) {
+                prop_assert!(target.length() > 0.0 && target.length().is_finite());
+                let options = SearchOptions { max_points: 8, budget_per_coordinate: 2, known: None };
+                let family = [Family::Angular, Family::Cardinal, Family::Cubic, Family::BSpline, Family::Linear][family];
+                {
+                    if let Ok(c) = fewest_points(&target, family, &options) {
+                        let h = c.measure.distances.hausdorff();
+                        prop_assert!(h.is_finite() && h >= 0.0, "{:?}: {:e}", family, h);
+                        prop_assert_eq!(c.within_tolerance, h <= target.tolerance());
+                        prop_assert!(c.points.iter().all(|p| p.iter().all(|x| x.is_finite())));
+                    }
+                }
+            }
+            Ok(())
+        })?;
+    }
+
     /// `Parametrization::parameters`: from 0 to 1, strictly increasing.
     #[test]
     fn parametrization(pts2 in points::<2>(0..=12), pts3 in points::<3>(0..=8)) {

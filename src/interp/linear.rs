@@ -63,6 +63,11 @@ impl<const N: usize> PiecewiseLinear<N> {
         let t = param.parameters(points)?;
         Self::try_new(&t, points)
     }
+
+    /// The nodes `x₀ < … < x_n` (the corners of the polygon).
+    pub fn nodes(&self) -> &[f64] {
+        &self.x
+    }
 }
 
 impl<const N: usize> ParametricCurve<N> for PiecewiseLinear<N> {

@@ -171,6 +171,35 @@ pub enum Interpolant {
     Linear(PiecewiseLinear<2>),
 }
 
+impl Interpolant {
+    /// The parameters where the curve's pieces meet, both ends of the domain included, sorted
+    /// and distinct: the Angular and cardinal segments' integers, the cubic spline's and
+    /// polygon's nodes, the B-spline's distinct knots inside its domain.
+    pub fn breaks(&self) -> Vec<f64> {
+        let integers = |n: usize| (0..=n).map(|k| k as f64).collect();
+        match self {
+            Interpolant::Angular(c) => integers(c.pieces()),
+            Interpolant::Cardinal(c) => integers(c.segments()),
+            Interpolant::Cubic(c) => c.nodes().to_vec(),
+            Interpolant::Linear(c) => c.nodes().to_vec(),
+            Interpolant::BSpline(c) => {
+                let (a, b) = c.domain();
+                let mut ks: Vec<f64> = c
+                    .basis()
+                    .knots()
+                    .breakpoints()
+                    .into_iter()
+                    .map(|(k, _)| k)
+                    .filter(|&k| k > a && k < b)
+                    .collect();
+                ks.insert(0, a);
+                ks.push(b);
+                ks
+            }
+        }
+    }
+}
+
 impl ParametricCurve<2> for Interpolant {
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vector2<D> {
         match self {

@@ -3,6 +3,7 @@
 
 pub mod angular;
 pub mod cardinal;
+pub mod choice;
 pub mod collocation;
 pub mod cubic;
 pub mod linear;

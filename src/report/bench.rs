@@ -239,8 +239,12 @@ fn angular_curve_pointwise() -> Result<usize> {
     Ok(black_box(line).len())
 }
 
+fn table_i() -> Result<usize> {
+    Ok(black_box(crate::comparison::table_i()?).len())
+}
+
 /// Every workload.
-pub const WORKLOADS: [Workload; 11] = [
+pub const WORKLOADS: [Workload; 12] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
@@ -295,6 +299,11 @@ pub const WORKLOADS: [Workload; 11] = [
         id: "angular-curve-pointwise",
         description: "the same 1e6 samples point by point (ParametricCurve::polyline, the reference path)",
         run: angular_curve_pointwise,
+    },
+    Workload {
+        id: "table-i",
+        description: "seed 004's Table I regenerated: 36 cells, each the printed configuration, the fewest points with the paper's rule and the automatic search (all cores)",
+        run: table_i,
     },
 ];
 

@@ -535,6 +535,58 @@ pub fn interpolation<C: ParametricCurve<2> + ?Sized>(
     Ok(panel.with(Series::line("points", xy(points), INK).styled(Style::Crosses(5))))
 }
 
+/// The panel of an automatic point choice ([`crate::interp::choice::fewest_points`]): the
+/// curve over the target's reference, its points marked (the B-spline's control polygon
+/// drawn), titled `title`, with the count, the error in % of the target's size and whether it
+/// is within the tolerance under the drawing.
+///
+/// # Errors
+/// The method's construction errors on the choice's points; as
+/// [`ParametricCurve::polyline`].
+pub fn choice_panel(
+    title: impl Into<String>,
+    target: &crate::interp::choice::Target,
+    choice: &crate::interp::choice::Choice,
+) -> Result<Panel> {
+    let closed = target.is_closed();
+    let curve = choice.method.curve(&choice.points, closed)?;
+    let drawn = choice.method.prepared(&choice.points, closed);
+    let polygon = matches!(choice.method, crate::Method::BSpline { .. });
+    let mut panel = interpolation(title, target.reference(), &drawn, polygon, &curve)?;
+    panel.x_label = format!(
+        "{} pts, error {:.2} %{}",
+        choice.measure.counted,
+        100.0 * choice.measure.distances.hausdorff() / target.size(),
+        if choice.within_tolerance {
+            ""
+        } else {
+            " (over the tolerance)"
+        }
+    );
+    panel.y_label = String::new();
+    Ok(panel)
+}
+
+/// [`choice_panel`] as a figure of its own, titled with the method and the tolerance.
+///
+/// # Errors
+/// As [`choice_panel`].
+pub fn choice(
+    target: &crate::interp::choice::Target,
+    choice: &crate::interp::choice::Choice,
+) -> Result<Figure> {
+    let title = format!(
+        "the fewest points found: {} within {:.2} % of the size",
+        choice.method.label(),
+        100.0 * target.tolerance() / target.size()
+    );
+    Ok(panels(
+        title.clone(),
+        vec![choice_panel(title, target, choice)?],
+        (1, 1),
+    ))
+}
+
 /// A comparison of interpolation methods over one shape: one [`interpolation`] panel per
 /// `(method, points, closed)`, titled with the method and its point count as the paper counts
 /// them, `layout = (rows, cols)`, one legend for all.

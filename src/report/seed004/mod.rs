@@ -4,6 +4,7 @@
 
 pub mod figures;
 pub mod letters;
+pub mod table_i;
 
 use crate::report::Output;
 
@@ -84,6 +85,21 @@ pub const OUTPUTS: &[Output] = &[
         "Seed 004 Table I: the 2 : 1 rectangle with the four methods",
         figures::rectangle,
     ),
+    Output::table(
+        "table-i",
+        "Seed 004 Table I regenerated: printed, the paper's rule, the fewest points found automatically",
+        table_i::table,
+    ),
+    Output::figure(
+        "fig-table-i",
+        "Seed 004 Table I's 36 panels with the automatic points (rows: methods, columns: shapes)",
+        table_i::figure,
+    ),
+    Output::table(
+        "table-i-cross",
+        "Seed 004: points optimal for one method drawn by each other method",
+        table_i::cross,
+    ),
     Output::figure(
         "fig-seed004-cross-circle",
         "Seed 004 Fig. 6: the circle's Angular points under the cardinal and the cubic",
@@ -133,5 +149,15 @@ pub const OUTPUTS: &[Output] = &[
         "fig-seed004-sicily-chosen",
         "Seed 004: the Sicilian coast with the paper's counts (92, 81, 84)",
         figures::sicily_chosen,
+    ),
+    Output::table(
+        "table-seed004-fewest",
+        "Seed 004: the fewest points per method for the letters a and the Sicilian coast",
+        table_i::letters_and_coast,
+    ),
+    Output::table(
+        "table-seed004-conclusions",
+        "Seed 004: the paper's conclusions beside the evidence of our runs",
+        table_i::conclusions,
     ),
 ];

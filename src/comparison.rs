@@ -1,0 +1,443 @@
+//! Seed 004's comparison regenerated: Table I cell by cell — the printed count and parameter
+//! with points placed by a stated rule, the fewest points that rule needs, and the fewest
+//! points found automatically ([`crate::interp::choice`]) — the cross-method experiment
+//! (points chosen for one method drawn by another), and the fewest points for shapes made of
+//! several contours (the letters, the coastline).
+//!
+//! Every error is the symmetric Hausdorff distance to a reference of
+//! [`REFERENCE_SEGMENTS`] segments, within the tolerance of 1 % of the shape's larger
+//! bounding-box side ([`crate::shapes::TOLERANCE_FRACTION`], spec decision A12).
+
+use crate::error::Result;
+use crate::interp::choice::{fewest_points, Choice, Family, Measure, SearchOptions, Target};
+use crate::interp::methods::Method;
+use crate::seeds::seed004::{paper_points, PrintedCell, SHAPES, TABLE_I};
+use crate::shapes::{Shape, TOLERANCE_FRACTION};
+use nalgebra::Vector2;
+
+/// Segments of each shape's reference polyline.
+pub const REFERENCE_SEGMENTS: usize = 2048;
+
+/// The most points (as counted) the paper's rule and the search try.
+pub const MAX_POINTS: usize = 40;
+
+/// A curve drawn from points chosen for another method is flagged "absurd" beyond this many
+/// tolerances (5 % of the shape's size: a shape visibly not the original).
+pub const ABSURD: f64 = 5.0;
+
+/// A method through given points, measured.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Configuration {
+    /// The method and its parameter.
+    pub method: Method,
+    /// The distinct points.
+    pub points: Vec<Vector2<f64>>,
+    /// How they were placed.
+    pub rule: &'static str,
+    /// Error and smoothness.
+    pub measure: Measure,
+}
+
+impl Configuration {
+    /// As a [`Choice`] within or not within `tolerance`.
+    fn choice(&self, tolerance: f64) -> Choice {
+        Choice {
+            method: self.method,
+            points: self.points.clone(),
+            measure: self.measure,
+            within_tolerance: self.measure.distances.hausdorff() <= tolerance,
+            evaluations: 0,
+        }
+    }
+}
+
+/// One cell of Table I regenerated.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CellStudy {
+    /// The printed cell.
+    pub cell: PrintedCell,
+    /// The paper's column name.
+    pub column: &'static str,
+    /// The shape.
+    pub shape: Shape,
+    /// The tolerance (1 % of the larger bounding-box side).
+    pub tolerance: f64,
+    /// The shape's size (its larger bounding-box side).
+    pub size: f64,
+    /// Inflections of the shape itself.
+    pub shape_inflections: Option<usize>,
+    /// The printed count and parameter, points placed by the paper's rule
+    /// ([`paper_points`]).
+    pub printed: Configuration,
+    /// The fewest points with the paper's rule and the printed parameter that meet the
+    /// tolerance (`None`: no count up to [`MAX_POINTS`] does, or the rule places no more
+    /// points).
+    pub paper_rule: Option<Configuration>,
+    /// The fewest points found by the automatic search (parameter, end condition or order
+    /// chosen too), started below [`CellStudy::paper_rule`]'s count.
+    pub automatic: Choice,
+}
+
+/// How our automatic count compares with the printed one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Verdict {
+    /// The same count.
+    Agrees,
+    /// Fewer points than printed.
+    Fewer,
+    /// More points than printed.
+    More,
+}
+
+impl Verdict {
+    /// `agrees`, `fewer`, `more`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Verdict::Agrees => "agrees",
+            Verdict::Fewer => "fewer",
+            Verdict::More => "more",
+        }
+    }
+}
+
+impl CellStudy {
+    /// The verdict and why, in words: whether the printed configuration meets our tolerance
+    /// with the paper's rule, what the search chose differently, the printed count that
+    /// cannot be (A20).
+    pub fn verdict(&self) -> (Verdict, String) {
+        let printed = self.cell.points;
+        let ours = self.automatic.measure.counted;
+        let verdict = match ours.cmp(&printed) {
+            std::cmp::Ordering::Equal => Verdict::Agrees,
+            std::cmp::Ordering::Less => Verdict::Fewer,
+            std::cmp::Ordering::Greater => Verdict::More,
+        };
+        let pct = |e: f64| 100.0 * e / self.size;
+        let printed_error = self.printed.measure.distances.hausdorff();
+        let mut why = Vec::new();
+        let impossible = self.printed.measure.counted != printed;
+        if impossible {
+            why.push(format!(
+                "the printed {printed} cannot be drawn ({}); the rule draws {}",
+                if self.cell.note.is_empty() {
+                    "the method needs another count"
+                } else {
+                    self.cell.note
+                },
+                self.printed.measure.counted
+            ));
+        }
+        if printed_error <= self.tolerance {
+            why.push(format!(
+                "the printed count meets 1 % with the paper's rule ({:.2} %)",
+                pct(printed_error)
+            ));
+        } else {
+            why.push(format!(
+                "the printed count with the paper's rule misses 1 % ({:.2} %)",
+                pct(printed_error)
+            ));
+        }
+        match verdict {
+            Verdict::Fewer => {
+                let changed = if self.automatic.method == self.cell.method {
+                    "placement optimised".to_string()
+                } else {
+                    format!(
+                        "placement optimised, {} instead of {}",
+                        self.automatic.method.label(),
+                        self.cell.method.label()
+                    )
+                };
+                why.push(changed);
+            }
+            Verdict::More if impossible && ours <= self.printed.measure.counted => {}
+            Verdict::More => why.push(format!(
+                "no placement found with fewer than {ours} meets 1 % (our tolerance is stricter than the paper's eye, or the search is local)"
+            )),
+            Verdict::Agrees => {}
+        }
+        if !self.automatic.within_tolerance {
+            why.push(format!("none up to {MAX_POINTS} points meets 1 %"));
+        }
+        (verdict, why.join("; "))
+    }
+}
+
+/// The study of one printed cell (module docs), with the search's `options` (its `known`
+/// field is set from the paper's rule).
+///
+/// # Errors
+/// The errors of [`paper_points`], [`Target::shape`], [`Target::measure`] and
+/// [`fewest_points`].
+pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStudy> {
+    let (column, shape) = SHAPES[cell.column.min(SHAPES.len() - 1)];
+    let target = Target::shape(&shape, REFERENCE_SEGMENTS)?;
+    let tolerance = target.tolerance();
+    let configure = |count: usize| -> Result<Configuration> {
+        let set = paper_points(&shape, &cell.method, count)?;
+        let measure = target.measure(&cell.method, &set.points)?;
+        Ok(Configuration {
+            method: cell.method,
+            points: set.points,
+            rule: set.rule,
+            measure,
+        })
+    };
+    let printed = configure(cell.points)?;
+    let mut paper_rule = None;
+    for count in 2..=MAX_POINTS {
+        let Ok(c) = configure(count) else { continue };
+        // a rule that cannot place `count` points places another number: skip it
+        if c.measure.counted == count && c.measure.distances.hausdorff() <= tolerance {
+            paper_rule = Some(c);
+            break;
+        }
+    }
+    let family = Family::of(&cell.method).unwrap_or(Family::Angular);
+    let options = SearchOptions {
+        known: paper_rule.as_ref().map(|c| c.choice(tolerance)),
+        ..options.clone()
+    };
+    let automatic = fewest_points(&target, family, &options)?;
+    Ok(CellStudy {
+        cell: *cell,
+        column,
+        shape,
+        tolerance,
+        size: target.size(),
+        shape_inflections: target.shape_inflections(),
+        printed,
+        paper_rule,
+        automatic,
+    })
+}
+
+/// The 36 cells of Table I ([`TABLE_I`], row by row), studied on all cores.
+///
+/// # Errors
+/// As [`study_cell`].
+pub fn table_i() -> Result<Vec<CellStudy>> {
+    let options = SearchOptions {
+        max_points: MAX_POINTS,
+        ..SearchOptions::default()
+    };
+    crate::parallel::map(&TABLE_I, |cell| study_cell(cell, &options))
+        .into_iter()
+        .collect()
+}
+
+/// Points chosen for one method drawn by another.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CrossStudy {
+    /// The paper's column name.
+    pub column: &'static str,
+    /// The method the points were chosen for (its automatic choice).
+    pub source: Method,
+    /// The method drawing them (with the parameter of its own automatic choice on the shape).
+    pub target: Method,
+    /// The points, as the drawing method counts them.
+    pub points: usize,
+    /// Its error, or why the method refuses the points.
+    pub error: std::result::Result<f64, String>,
+    /// The drawing method's error with its own automatic points.
+    pub own_error: f64,
+    /// The shape's size (for percentages).
+    pub size: f64,
+    /// Whether the curve is "absurd": refused, or beyond [`ABSURD`] tolerances.
+    pub absurd: bool,
+}
+
+/// The cross-method experiment on the studied cells: for every shape, the automatic points
+/// of each method on the shape fed to each other method, drawn with that method's own
+/// automatic parameter (a B-spline's order capped by the points it gets). On an open shape
+/// the guides go with the drawing method: the Angular and cardinal splines' guides are taken
+/// off the points they chose, and a guided drawing method gets its own automatic guides; a
+/// B-spline's vertices count as points on the shape.
+///
+/// # Errors
+/// [`crate::Error::TooFewPoints`] for cells that are not whole columns of four methods;
+/// the errors of [`Target::shape`].
+pub fn cross_methods(cells: &[CellStudy]) -> Result<Vec<CrossStudy>> {
+    let mut out = Vec::new();
+    for (column, shape) in SHAPES {
+        let of_shape: Vec<&CellStudy> = cells.iter().filter(|c| c.shape == shape).collect();
+        if of_shape.is_empty() {
+            continue;
+        }
+        let target = Target::shape(&shape, REFERENCE_SEGMENTS)?;
+        for source in &of_shape {
+            for drawer in &of_shape {
+                if std::ptr::eq(*source, *drawer) {
+                    continue;
+                }
+                let points = &exchanged(&source.automatic, &drawer.automatic, target.is_closed());
+                let mut method = drawer.automatic.method;
+                if let Method::BSpline { order } = method {
+                    let available = method.counted_points(points.len(), target.is_closed());
+                    method = Method::BSpline {
+                        order: order.min(available).max(2),
+                    };
+                }
+                let measured = target.measure(&method, points);
+                let error = measured
+                    .as_ref()
+                    .map(|m| m.distances.hausdorff())
+                    .map_err(|e| e.to_string());
+                let absurd = error
+                    .as_ref()
+                    .map_or(true, |&e| e > ABSURD * target.tolerance());
+                out.push(CrossStudy {
+                    column,
+                    source: source.automatic.method,
+                    target: method,
+                    points: method.counted_points(points.len(), target.is_closed()),
+                    error,
+                    own_error: drawer.automatic.measure.distances.hausdorff(),
+                    size: target.size(),
+                    absurd,
+                });
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The points of `source` as `drawer` takes them (see [`cross_methods`]).
+fn exchanged(source: &Choice, drawer: &Choice, closed: bool) -> Vec<Vector2<f64>> {
+    let guided = |m: &Method| !closed && matches!(m, Method::Angular | Method::Cardinal { .. });
+    let mut on_shape = source.points.clone();
+    if guided(&source.method) && on_shape.len() >= 2 {
+        on_shape.pop();
+        on_shape.remove(0);
+    }
+    if guided(&drawer.method) && drawer.points.len() >= 2 {
+        on_shape.insert(0, drawer.points[0]);
+        on_shape.push(drawer.points[drawer.points.len() - 1]);
+    }
+    on_shape
+}
+
+/// The fewest points of one method for a shape made of closed contours.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContourStudy {
+    /// The method family.
+    pub family: Family,
+    /// The choice for each contour.
+    pub contours: Vec<Choice>,
+    /// The tolerance used.
+    pub tolerance: f64,
+}
+
+impl ContourStudy {
+    /// The points of all contours, as counted.
+    pub fn counted(&self) -> usize {
+        self.contours.iter().map(|c| c.measure.counted).sum()
+    }
+
+    /// The largest error over the contours.
+    pub fn error(&self) -> f64 {
+        self.contours
+            .iter()
+            .map(|c| c.measure.distances.hausdorff())
+            .fold(0.0, f64::max)
+    }
+
+    /// Whether every contour is within the tolerance.
+    pub fn within_tolerance(&self) -> bool {
+        self.contours.iter().all(|c| c.within_tolerance)
+    }
+}
+
+/// 1 % of the larger side of the bounding box of all `contours` (0 for none).
+pub fn contour_tolerance(contours: &[Vec<Vector2<f64>>]) -> f64 {
+    let (lo, hi) = contours.iter().flatten().fold(
+        (
+            Vector2::repeat(f64::INFINITY),
+            Vector2::repeat(f64::NEG_INFINITY),
+        ),
+        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+    );
+    let side = (hi - lo).amax();
+    if side.is_finite() {
+        TOLERANCE_FRACTION * side
+    } else {
+        0.0
+    }
+}
+
+/// The fewest points with which `family` draws each closed contour of `contours` (dense
+/// polylines) within `tolerance`, searched contour by contour on all cores.
+///
+/// # Errors
+/// The errors of [`Target::polyline`] and [`fewest_points`].
+pub fn fewest_for_contours(
+    contours: &[Vec<Vector2<f64>>],
+    tolerance: f64,
+    family: Family,
+    options: &SearchOptions,
+) -> Result<ContourStudy> {
+    let choices = crate::parallel::map(contours, |c| {
+        let target = Target::polyline(c, true, tolerance)?;
+        fewest_points(&target, family, options)
+    });
+    Ok(ContourStudy {
+        family,
+        contours: choices.into_iter().collect::<Result<_>>()?,
+        tolerance,
+    })
+}
+
+/// How many pieces of `method`'s curve through `points` change when the point `index` moves
+/// by `delta`: the measure of locality (the paper: "only the Angular has the local property").
+/// A piece changes when any of `per_piece` samples on it moves by more than `10⁻¹²` of the
+/// points' extent.
+///
+/// # Errors
+/// [`crate::Error::IndexOutOfRange`] for an index beyond the points; the errors of
+/// [`Method::curve`] for either curve; [`crate::Error::CountMismatch`] if the two curves'
+/// pieces differ in number (a B-spline's knots do not move with its points, so they never
+/// do).
+pub fn pieces_changed(
+    method: &Method,
+    points: &[Vector2<f64>],
+    closed: bool,
+    index: usize,
+    delta: Vector2<f64>,
+) -> Result<usize> {
+    if index >= points.len() {
+        return Err(crate::Error::IndexOutOfRange {
+            what: "moved point",
+            index,
+            len: points.len(),
+        });
+    }
+    let mut moved = points.to_vec();
+    moved[index] += delta;
+    let (a, b) = (method.curve(points, closed)?, method.curve(&moved, closed)?);
+    let (ba, bb) = (a.breaks(), b.breaks());
+    if ba.len() != bb.len() {
+        return Err(crate::Error::CountMismatch {
+            what: "pieces of the moved curve",
+            expected: ba.len(),
+            got: bb.len(),
+        });
+    }
+    let extent = points
+        .iter()
+        .map(|p| p.amax())
+        .fold(0.0, f64::max)
+        .max(1e-300);
+    const PER_PIECE: usize = 16;
+    let mut changed = 0;
+    for (wa, wb) in ba.windows(2).zip(bb.windows(2)) {
+        let differs = (0..=PER_PIECE).any(|k| {
+            let f = k as f64 / PER_PIECE as f64;
+            let pa = crate::curve::ParametricCurve::point(&a, wa[0] + (wa[1] - wa[0]) * f);
+            let pb = crate::curve::ParametricCurve::point(&b, wb[0] + (wb[1] - wb[0]) * f);
+            (pa - pb).amax() > 1e-12 * extent
+        });
+        changed += usize::from(differs);
+    }
+    Ok(changed)
+}

@@ -1,0 +1,463 @@
+//! How far a plane curve is from the shape it draws, and how smooth it looks: the measures of
+//! seed 004's comparison (spec §4: "a deviation about the width of the stroke" and a
+//! "pleasing visual course").
+//!
+//! **Distances.** Both curves are dense polylines. The distance of a point to a polyline is
+//! the exact minimum over its segments ([`segment_distance`]); the one-sided distance from
+//! `A` to `B` is the largest such distance over the vertices of `A`,
+//! `h(A, B) = maxₐ min_{s ∈ B} |a − s|`, and the symmetric Hausdorff distance is
+//! `H(A, B) = max(h(A, B), h(B, A))`. Taken over vertices, `h` can miss at most the largest
+//! distance reached inside a segment of `A`, which is at most half its length more — sample
+//! densely ([`sample_pieces`]).
+//!
+//! Nearest segments are found through a bounding-volume tree of the segments
+//! ([`SegmentTree`]: median splits, at most [`LEAF`] segments per leaf, so it takes `O(n)`
+//! memory whatever the shape of the polyline), searched branch-and-bound; the one-sided
+//! maximum stops searching a point as soon as it is nearer than the largest distance found
+//! so far (Taha & Hanbury's early break), which does not change the result. Both are checked
+//! against the brute-force minimum over all segments (tests/curve_metrics.rs).
+//!
+//! **Smoothness.** The signed curvature `κ = (x′y″ − y′x″)/|C′|³` from exact derivatives
+//! ([`crate::curve::signed_curvature`]), sampled along each piece, made dimensionless by a
+//! length `L` (the shape's size): the number of sign changes of `κL` beyond a threshold
+//! (inflections), the largest jump of `κL` across the breaks between pieces (a curvature
+//! discontinuity shows as a jump; a C² curve has none), the largest `|κL|` and the samples
+//! where the tangent vanishes (cusps).
+
+use crate::curve::{signed_curvature, ParametricCurve};
+use crate::error::{Error, Result};
+use nalgebra::Vector2;
+
+/// The most segments a leaf of a [`SegmentTree`] holds.
+pub const LEAF: usize = 4;
+
+/// The distance from `p` to the segment `ab` (to the point `a` when `a = b`): the foot of the
+/// perpendicular `a + t(b − a)`, `t = (p − a)·(b − a)/|b − a|²` clamped to `[0, 1]`
+/// (coordinates beyond `1e100` scaled by a power of two first, so no square overflows).
+pub fn segment_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    let u = unit_for(p.amax().max(a.amax()).max(b.amax()));
+    scaled_distance2(p, a, b, 1.0 / u).sqrt() * u
+}
+
+/// The squared distance from `p` to `ab`, in units of `1/k` (`k` a power of two: exact).
+fn scaled_distance2(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>, k: f64) -> f64 {
+    if k == 1.0 {
+        segment_distance2(p, a, b)
+    } else {
+        segment_distance2(p * k, a * k, b * k)
+    }
+}
+
+fn segment_distance2(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    let t = if len2 > 0.0 {
+        ((p - a).dot(&ab) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p - (a + ab * t)).norm_squared()
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    lo: Vector2<f64>,
+    hi: Vector2<f64>,
+    /// A leaf: `order[first .. first + count]`; an inner node (`count == 0`): its children
+    /// are nodes `first` and `first + 1`.
+    first: u32,
+    count: u32,
+}
+
+impl Node {
+    /// The squared distance from `p` to the box (0 inside), in units of `1/k`.
+    fn distance2(&self, p: Vector2<f64>, k: f64) -> f64 {
+        let dx = (self.lo.x - p.x).max(p.x - self.hi.x).max(0.0) * k;
+        let dy = (self.lo.y - p.y).max(p.y - self.hi.y).max(0.0) * k;
+        dx * dx + dy * dy
+    }
+}
+
+/// Relative slack of the tree's pruning (see the search in `SegmentTree::nearest`).
+const PRUNE_SLACK: f64 = 1e-12;
+
+/// Coordinates up to this size are measured unscaled: no squared distance between them can
+/// overflow.
+const UNSCALED: f64 = 1e100;
+
+/// A power of two at least `m` (for scaling without rounding), 1 for `m ≤` [`UNSCALED`].
+fn unit_for(m: f64) -> f64 {
+    if m <= UNSCALED {
+        1.0
+    } else {
+        // m ≤ f64::MAX: the exponent is at most 1024, and 2^1024 is not a double, so stop at
+        // 2^1023 (m / 2^1023 < 2 then)
+        2f64.powi((m.log2().ceil() as i32).min(1023))
+    }
+}
+
+/// The segments of a polyline in a bounding-volume tree, for nearest-segment queries.
+#[derive(Debug, Clone)]
+pub struct SegmentTree {
+    points: Vec<Vector2<f64>>,
+    /// The largest coordinate magnitude.
+    extent: f64,
+    /// Segment `i` runs from `points[i]` to `points[i + 1]`.
+    order: Vec<u32>,
+    nodes: Vec<Node>,
+}
+
+impl SegmentTree {
+    /// The tree of the polyline through `points` (a single point is a segment of length 0).
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] for no point; [`Error::NonFinite`] or
+    /// [`Error::CoordinateTooLarge`] for a coordinate; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`] points.
+    pub fn new(points: &[Vector2<f64>]) -> Result<Self> {
+        crate::error::size("polyline points", points.len())?;
+        if points.is_empty() {
+            return Err(Error::TooFewPoints {
+                what: "polyline points",
+                needed: 1,
+                got: 0,
+            });
+        }
+        crate::error::finite_points("polyline point", points)?;
+        let mut points = points.to_vec();
+        if points.len() == 1 {
+            points.push(points[0]);
+        }
+        let segments = points.len() - 1;
+        let mut tree = SegmentTree {
+            extent: points.iter().map(|p| p.amax()).fold(0.0, f64::max),
+            order: (0..segments as u32).collect(),
+            nodes: Vec::with_capacity(2 * segments.div_ceil(LEAF) + 1),
+            points,
+        };
+        tree.nodes.push(tree.bounds(0, segments));
+        let mut stack = vec![(0usize, 0usize, segments)];
+        while let Some((node, start, end)) = stack.pop() {
+            if end - start <= LEAF {
+                tree.nodes[node].first = start as u32;
+                tree.nodes[node].count = (end - start) as u32;
+                continue;
+            }
+            // split at the median of the segments' midpoints along the box's longer side
+            let b = tree.nodes[node];
+            let axis = usize::from(b.hi.y - b.lo.y > b.hi.x - b.lo.x);
+            let mid = start + (end - start) / 2;
+            let pts = &tree.points;
+            let key = |i: &u32| pts[*i as usize][axis] + pts[*i as usize + 1][axis];
+            tree.order[start..end]
+                .select_nth_unstable_by(mid - start, |i, j| key(i).total_cmp(&key(j)));
+            let left = tree.nodes.len();
+            let (lb, rb) = (tree.bounds(start, mid), tree.bounds(mid, end));
+            tree.nodes.push(lb);
+            tree.nodes.push(rb);
+            tree.nodes[node].first = left as u32;
+            stack.push((left, start, mid));
+            stack.push((left + 1, mid, end));
+        }
+        Ok(tree)
+    }
+
+    /// The box of the segments `order[start..end]`, as a node without children.
+    fn bounds(&self, start: usize, end: usize) -> Node {
+        let mut lo = Vector2::repeat(f64::INFINITY);
+        let mut hi = Vector2::repeat(f64::NEG_INFINITY);
+        for &i in &self.order[start..end] {
+            for p in [self.points[i as usize], self.points[i as usize + 1]] {
+                lo = lo.inf(&p);
+                hi = hi.sup(&p);
+            }
+        }
+        Node {
+            lo,
+            hi,
+            first: 0,
+            count: 0,
+        }
+    }
+
+    /// The polyline's vertices.
+    pub fn points(&self) -> &[Vector2<f64>] {
+        &self.points
+    }
+
+    /// The distance from `p` to the polyline: the exact minimum over its segments (computed
+    /// in units of a power of two when coordinates exceed `1e100`, so no square overflows).
+    /// It is finite for `p` within [`crate::error::MAX_COORDINATE`]; beyond, or for a NaN
+    /// coordinate, it is unspecified (`+∞` or NaN): check query points first.
+    pub fn distance(&self, p: Vector2<f64>) -> f64 {
+        self.nearest(p, 0.0)
+    }
+
+    /// The distance from `p` to the polyline, except that the search may stop and return
+    /// any distance below `stop` as soon as it finds one.
+    fn nearest(&self, p: Vector2<f64>, stop: f64) -> f64 {
+        let u = unit_for(self.extent.max(p.amax()));
+        let k = 1.0 / u;
+        let stop = (stop * k) * (stop * k);
+        let mut best = f64::INFINITY;
+        // depth ≤ log₂(segments) + 1 < 64 for any size below MAX_ELEMENTS
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = self.nodes[stack[top] as usize];
+            // a box farther than the best so far cannot hold a nearer segment; the slack
+            // covers the rounding of the segment formula (a few ulps), so every segment whose
+            // computed distance could tie or beat `best` is visited and the minimum is the
+            // brute-force one exactly
+            if node.distance2(p, k) > best * (1.0 + PRUNE_SLACK) {
+                continue;
+            }
+            if node.count > 0 {
+                let first = node.first as usize;
+                for &i in &self.order[first..first + node.count as usize] {
+                    let i = i as usize;
+                    best = best.min(scaled_distance2(p, self.points[i], self.points[i + 1], k));
+                }
+                if best < stop {
+                    return best.sqrt() * u;
+                }
+                continue;
+            }
+            // the nearer child last, so it is searched first
+            let (l, r) = (node.first, node.first + 1);
+            let (dl, dr) = (
+                self.nodes[l as usize].distance2(p, k),
+                self.nodes[r as usize].distance2(p, k),
+            );
+            let (near, far) = if dl <= dr { (l, r) } else { (r, l) };
+            stack[top] = far;
+            stack[top + 1] = near;
+            top += 2;
+        }
+        best.sqrt() * u
+    }
+
+    /// The one-sided distance `maxᵢ min_{s} |from[i] − s|` from the points `from` to the
+    /// polyline, and the index of a point where it is reached (`None` for no point). The
+    /// points are visited in a fixed scrambled order, which makes the early break effective
+    /// on ordered input; the result does not depend on it.
+    pub fn farthest(&self, from: &[Vector2<f64>]) -> (f64, Option<usize>) {
+        let n = from.len();
+        let mut max = 0.0;
+        let mut at = None;
+        // a stride coprime with n visits every index once
+        let stride = scramble_stride(n);
+        let mut i = 0;
+        for _ in 0..n {
+            let d = self.nearest(from[i], max);
+            if d > max || at.is_none() {
+                max = d;
+                at = Some(i);
+            }
+            i = (i + stride) % n;
+        }
+        (max, at)
+    }
+}
+
+/// A stride near `0.618 n` that is coprime with `n` (1 for `n ≤ 2`).
+fn scramble_stride(n: usize) -> usize {
+    if n <= 2 {
+        return 1;
+    }
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let mut s = ((n as f64 * 0.618_033_988_749_895) as usize).max(1);
+    while gcd(s, n) != 1 {
+        s += 1;
+    }
+    s
+}
+
+/// One-sided and symmetric distances between a curve and a reference.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Distances {
+    /// `h(curve, reference)`: the largest distance from a point of the curve to the
+    /// reference (a curve straying from the shape).
+    pub curve_to_reference: f64,
+    /// `h(reference, curve)`: the largest distance from a point of the reference to the curve
+    /// (a part of the shape the curve misses).
+    pub reference_to_curve: f64,
+}
+
+impl Distances {
+    /// The symmetric Hausdorff distance, the larger of the two.
+    pub fn hausdorff(&self) -> f64 {
+        self.curve_to_reference.max(self.reference_to_curve)
+    }
+}
+
+/// The one-sided and symmetric distances between the polylines `curve` and `reference`
+/// (module docs).
+///
+/// # Errors
+/// As [`SegmentTree::new`] for either polyline.
+pub fn polyline_distances(curve: &[Vector2<f64>], reference: &[Vector2<f64>]) -> Result<Distances> {
+    distances_to(curve, &SegmentTree::new(reference)?)
+}
+
+/// As [`polyline_distances`] with the reference's tree built once (for many curves measured
+/// against one shape).
+///
+/// # Errors
+/// As [`SegmentTree::new`] for `curve`.
+pub fn distances_to(curve: &[Vector2<f64>], reference: &SegmentTree) -> Result<Distances> {
+    let to_curve = SegmentTree::new(curve)?;
+    Ok(Distances {
+        curve_to_reference: reference.farthest(curve).0,
+        reference_to_curve: to_curve.farthest(reference.points()).0,
+    })
+}
+
+/// The curve sampled at `per_piece` equally spaced parameters on each piece between
+/// consecutive `breaks` (sorted, at least two), both ends of each piece included once: the
+/// polyline distances are measured on.
+///
+/// # Errors
+/// [`Error::TooFewPoints`] for fewer than two breaks; [`Error::TooFewSamples`] for fewer
+/// than 2 samples per piece; [`Error::TooLarge`] for more than
+/// [`crate::error::MAX_ELEMENTS`] samples; [`Error::Overflow`] for a sample that is not
+/// finite.
+pub fn sample_pieces<C: ParametricCurve<2> + ?Sized>(
+    curve: &C,
+    breaks: &[f64],
+    per_piece: usize,
+) -> Result<Vec<Vector2<f64>>> {
+    let mut out = Vec::new();
+    sample_pieces_into(curve, breaks, per_piece, &mut out)?;
+    Ok(out)
+}
+
+/// As [`sample_pieces`], into `out` (cleared first), so that a search can reuse one buffer.
+///
+/// # Errors
+/// As [`sample_pieces`].
+pub fn sample_pieces_into<C: ParametricCurve<2> + ?Sized>(
+    curve: &C,
+    breaks: &[f64],
+    per_piece: usize,
+    out: &mut Vec<Vector2<f64>>,
+) -> Result<()> {
+    out.clear();
+    let total = check_pieces("curve samples", breaks, per_piece)?;
+    out.reserve(total);
+    for w in breaks.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        for k in 0..per_piece - 1 {
+            out.push(curve.point(a + (b - a) * (k as f64 / (per_piece - 1) as f64)));
+        }
+    }
+    out.push(curve.point(breaks[breaks.len() - 1]));
+    crate::error::derived_points("curve sample", out)
+}
+
+/// Checks at least two breaks and 2 … [`crate::error::MAX_ELEMENTS`] samples in all with
+/// `per_piece` per piece; the total (pieces × per piece).
+fn check_pieces(what: &'static str, breaks: &[f64], per_piece: usize) -> Result<usize> {
+    if breaks.len() < 2 {
+        return Err(Error::TooFewPoints {
+            what: "curve breaks",
+            needed: 2,
+            got: breaks.len(),
+        });
+    }
+    crate::error::samples("samples per piece", per_piece)?;
+    crate::error::size_product(what, breaks.len() - 1, per_piece)
+}
+
+/// The signed curvature along each piece of `curve` at `per_piece` equally spaced parameters
+/// (both ends of each piece: the curvature on either side of a break), `(t, κ(t))`, from exact
+/// derivatives (NaN where the tangent vanishes).
+///
+/// # Errors
+/// As [`sample_pieces`] (no finiteness check: a cusp is a NaN curvature).
+pub fn curvature_profile<C: ParametricCurve<2> + ?Sized>(
+    curve: &C,
+    breaks: &[f64],
+    per_piece: usize,
+) -> Result<Vec<Vec<(f64, f64)>>> {
+    check_pieces("curvature samples", breaks, per_piece)?;
+    Ok(breaks
+        .windows(2)
+        .map(|w| {
+            // the ends a hair inside the piece, so a piecewise curve is evaluated on it
+            let (a, b) = (w[0], w[1]);
+            let inset = (b - a) * 1e-9;
+            (0..per_piece)
+                .map(|k| {
+                    let t = a + (b - a) * (k as f64 / (per_piece - 1) as f64);
+                    let t = t.clamp(a + inset, b - inset);
+                    let [_, d1, d2] = curve.derivatives2(t);
+                    (t, signed_curvature(&d1, &d2))
+                })
+                .collect()
+        })
+        .collect())
+}
+
+/// How smooth a curve looks (module docs), from its [`curvature_profile`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Smoothness {
+    /// Sign changes of `κL` (inflections), values with `|κL| ≤` [`FLAT`] counting as neither
+    /// sign (straight stretches).
+    pub inflections: usize,
+    /// The largest jump of `κL` across a break between pieces.
+    pub max_jump: f64,
+    /// The largest `|κL|`.
+    pub max_curvature: f64,
+    /// Samples where the curvature is not finite (a vanishing tangent: a cusp).
+    pub singular: usize,
+}
+
+/// Dimensionless curvatures `|κL|` at or below this count as straight (neither sign) when
+/// counting inflections: a bend of a tenth of a radian over the whole length `L`.
+pub const FLAT: f64 = 0.1;
+
+/// The smoothness of a curvature profile with the length scale `length` (module docs).
+pub fn smoothness(profile: &[Vec<(f64, f64)>], length: f64) -> Smoothness {
+    let mut s = Smoothness {
+        inflections: 0,
+        max_jump: 0.0,
+        max_curvature: 0.0,
+        singular: 0,
+    };
+    let mut last_sign = 0.0;
+    let mut end_of_last: Option<f64> = None;
+    for piece in profile {
+        for (k, &(_, kappa)) in piece.iter().enumerate() {
+            let kl = kappa * length;
+            if !kl.is_finite() {
+                s.singular += 1;
+                if k == 0 {
+                    end_of_last = None;
+                }
+                continue;
+            }
+            if k == 0 {
+                if let Some(prev) = end_of_last {
+                    s.max_jump = s.max_jump.max((kl - prev).abs());
+                }
+            }
+            s.max_curvature = s.max_curvature.max(kl.abs());
+            if kl.abs() > FLAT {
+                let sign = kl.signum();
+                if last_sign != 0.0 && sign != last_sign {
+                    s.inflections += 1;
+                }
+                last_sign = sign;
+            }
+        }
+        end_of_last = piece.last().map(|p| p.1 * length).filter(|k| k.is_finite());
+    }
+    s
+}
