@@ -30,8 +30,8 @@
 //! - `report` (default): the report layer, with polars and plotters.
 //! - `cli` (default): the `splinelab` program (clap, anyhow); implies `report`.
 //!
-//! With `default-features = false` the crate is the mathematics alone: num-dual, nalgebra
-//! and thiserror.
+//! With `default-features = false` the crate is the mathematics alone: num-dual, nalgebra,
+//! thiserror and num-traits (already a dependency of num-dual).
 
 /// The linear-algebra crate of the points and vectors (`nalgebra`), re-exported so a notebook
 /// cell or a user crate needs no `:dep` line of its own and always gets the version splinelab
@@ -63,6 +63,7 @@ pub mod seeds;
 pub mod shapes;
 pub mod study;
 pub mod surface;
+pub mod symbolic;
 pub mod tensor;
 mod tridiagonal;
 

@@ -134,6 +134,22 @@ fn an_impossible_tolerance_is_reported_not_hidden() {
 }
 
 #[test]
+fn huge_search_options_stay_bounded() {
+    // a tolerance nothing meets with a limit of a million points: the count stops at the
+    // reference's vertices and the compass search at its evaluation cap
+    let shape = Shape::Parabola { half_width: 1.0 };
+    let target = Target::polyline(&shape.reference(24).unwrap(), false, 1e-12).unwrap();
+    let options = SearchOptions {
+        max_points: 1_000_000,
+        budget_per_coordinate: 1,
+        known: None,
+    };
+    let c = fewest_points(&target, Family::Linear, &options).unwrap();
+    assert!(!c.within_tolerance || c.measure.distances.hausdorff() <= 1e-12);
+    assert!(c.points.len() <= target.reference().len());
+}
+
+#[test]
 fn bad_targets_are_typed_errors() {
     let p = |x: f64, y: f64| V::new(x, y);
     let line = [p(0.0, 0.0), p(1.0, 0.0)];

@@ -60,6 +60,10 @@ pub const SEARCH_SAMPLES: usize = 24;
 /// The fraction of the tolerance at which the compass search stops.
 pub const GOAL: f64 = 0.9;
 
+/// The most error evaluations one compass search makes, whatever
+/// [`SearchOptions::budget_per_coordinate`] asks.
+pub const MAX_EVALUATIONS: usize = 100_000;
+
 /// How many of the best starts the compass search polishes, one after the other until one
 /// meets the tolerance.
 pub const POLISHED_STARTS: usize = 2;
@@ -523,9 +527,11 @@ impl Family {
 /// How far the search goes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchOptions {
-    /// The most points (as counted) tried.
+    /// The most points (as counted) tried; never more distinct points than the target's
+    /// reference has vertices.
     pub max_points: usize,
-    /// Error evaluations per count and start, per free coordinate.
+    /// Error evaluations per count and start, per free coordinate (at least 50 and at most
+    /// [`MAX_EVALUATIONS`] in all).
     pub budget_per_coordinate: usize,
     /// A configuration known to meet the tolerance: the search starts below its count and
     /// returns it if it finds nothing with fewer points.
@@ -556,7 +562,11 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     }
     let mut evaluations = 0;
     let min = min_distinct(family, target.closed);
-    let max = distinct_of(family, target.closed, options.max_points).max(min);
+    // more distinct points than the reference has vertices cannot help: the count is capped
+    // there, which also bounds the search's cost for any `max_points`
+    let max = distinct_of(family, target.closed, options.max_points)
+        .min(target.reference().len())
+        .max(min);
     let known = options.known.clone().filter(|k| k.within_tolerance);
     let mut found: Option<(usize, Choice)> =
         known.map(|k| (distinct_of(family, target.closed, k.measure.counted), k));
@@ -777,7 +787,9 @@ fn place(
         starts.sort_by(|a, b| a.1.total_cmp(&b.1));
         for (x, e) in starts.into_iter().take(POLISHED_STARTS) {
             let dims = x.len();
-            let budget = budget_per_coordinate.saturating_mul(dims).max(50);
+            let budget = budget_per_coordinate
+                .saturating_mul(dims)
+                .clamp(50, MAX_EVALUATIONS);
             let (x, _, evals) = compass(target, &layout, x, e, budget, &mut scratch);
             evaluations += evals;
             if let Some(c) = finish(target, &layout, &x)? {

@@ -1,0 +1,437 @@
+//! The expression type: a `Copy` handle into a per-thread arena of hash-consed nodes, carrying
+//! its value at the trace point (so `re()`, comparisons and `abs` follow the numeric path).
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+/// The most nodes one trace may create ([`crate::symbolic::Trace::formula`] returns
+/// [`crate::Error::TooLarge`] beyond).
+pub const MAX_NODES: usize = 1 << 20;
+
+/// A function of one argument.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Func {
+    /// `sin`.
+    Sin,
+    /// `cos`.
+    Cos,
+    /// `tan`.
+    Tan,
+    /// `exp`.
+    Exp,
+    /// `ln`.
+    Ln,
+    /// `sqrt`.
+    Sqrt,
+    /// `cbrt`.
+    Cbrt,
+    /// `asin`.
+    Asin,
+    /// `acos`.
+    Acos,
+    /// `atan`.
+    Atan,
+    /// `sinh`.
+    Sinh,
+    /// `cosh`.
+    Cosh,
+    /// `tanh`.
+    Tanh,
+    /// `asinh`.
+    Asinh,
+    /// `acosh`.
+    Acosh,
+    /// `atanh`.
+    Atanh,
+    /// `abs` (the numeric branch is recorded, see [`crate::symbolic`]).
+    Abs,
+    /// The spherical Bessel function `j₀`.
+    SphJ0,
+    /// `j₁`.
+    SphJ1,
+    /// `j₂`.
+    SphJ2,
+}
+
+impl Func {
+    /// The function's name as printed.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Exp => "exp",
+            Func::Ln => "ln",
+            Func::Sqrt => "sqrt",
+            Func::Cbrt => "cbrt",
+            Func::Asin => "asin",
+            Func::Acos => "acos",
+            Func::Atan => "atan",
+            Func::Sinh => "sinh",
+            Func::Cosh => "cosh",
+            Func::Tanh => "tanh",
+            Func::Asinh => "asinh",
+            Func::Acosh => "acosh",
+            Func::Atanh => "atanh",
+            Func::Abs => "abs",
+            Func::SphJ0 => "j0",
+            Func::SphJ1 => "j1",
+            Func::SphJ2 => "j2",
+        }
+    }
+
+    /// The function at `x`.
+    pub fn apply(&self, x: f64) -> f64 {
+        use num_dual::DualNum;
+        match self {
+            Func::Sin => x.sin(),
+            Func::Cos => x.cos(),
+            Func::Tan => x.tan(),
+            Func::Exp => x.exp(),
+            Func::Ln => x.ln(),
+            Func::Sqrt => x.sqrt(),
+            Func::Cbrt => x.cbrt(),
+            Func::Asin => x.asin(),
+            Func::Acos => x.acos(),
+            Func::Atan => x.atan(),
+            Func::Sinh => x.sinh(),
+            Func::Cosh => x.cosh(),
+            Func::Tanh => x.tanh(),
+            Func::Asinh => x.asinh(),
+            Func::Acosh => x.acosh(),
+            Func::Atanh => x.atanh(),
+            Func::Abs => x.abs(),
+            Func::SphJ0 => DualNum::sph_j0(&x),
+            Func::SphJ1 => DualNum::sph_j1(&x),
+            Func::SphJ2 => DualNum::sph_j2(&x),
+        }
+    }
+}
+
+/// One node of an expression (children are arena indices).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Node {
+    /// A constant.
+    Num(f64),
+    /// A variable, by its index in the trace's names.
+    Var(u32),
+    /// `a + b`.
+    Add(u32, u32),
+    /// `a · b`.
+    Mul(u32, u32),
+    /// `a / b`.
+    Div(u32, u32),
+    /// `−a`.
+    Neg(u32),
+    /// `aⁿ`, `n` an integer.
+    Powi(u32, i32),
+    /// `aˣ`, `x` a real constant.
+    Powf(u32, f64),
+    /// `aᵇ`, both expressions.
+    Pow(u32, u32),
+    /// `f(a)`.
+    Apply(Func, u32),
+    /// `atan2(a, b)`.
+    Atan2(u32, u32),
+    /// An operation without a formula (`%`, …), with its value at the trace point.
+    Opaque(&'static str, u32, f64),
+}
+
+impl Node {
+    /// The node as plain data — a tag, two payload words (floats by their bits, so `-0.0`
+    /// and `0.0` stay apart and NaN equals itself) and a name — for hash-consing.
+    fn parts(&self) -> (u8, u64, u64, &'static str) {
+        let w = |x: u32| u64::from(x);
+        match *self {
+            Node::Num(x) => (0, x.to_bits(), 0, ""),
+            Node::Var(i) => (1, w(i), 0, ""),
+            Node::Add(a, b) => (2, w(a), w(b), ""),
+            Node::Mul(a, b) => (3, w(a), w(b), ""),
+            Node::Div(a, b) => (4, w(a), w(b), ""),
+            Node::Neg(a) => (5, w(a), 0, ""),
+            Node::Powi(a, n) => (6, w(a), n as u64, ""),
+            Node::Powf(a, x) => (7, w(a), x.to_bits(), ""),
+            Node::Pow(a, b) => (8, w(a), w(b), ""),
+            Node::Apply(f, a) => (9, w(a), f as u64, ""),
+            Node::Atan2(a, b) => (10, w(a), w(b), ""),
+            Node::Opaque(n, a, v) => (11, w(a), v.to_bits(), n),
+        }
+    }
+}
+
+/// The per-thread arena of one trace.
+#[derive(Debug, Default)]
+pub(crate) struct Arena {
+    pub(crate) nodes: Vec<Node>,
+    index: HashMap<(u8, u64, u64, &'static str), u32>,
+    /// Incremented when a trace ends: handles of an older trace are stale.
+    pub(crate) generation: u32,
+    /// Set when [`MAX_NODES`] was reached; later nodes all collapse onto one opaque node.
+    pub(crate) overflowed: bool,
+    /// Conditions the trace's values took on `re()` branches (`abs`, comparisons…).
+    pub(crate) branches: Vec<(u32, &'static str, f64)>,
+}
+
+thread_local! {
+    pub(crate) static ARENA: RefCell<Arena> = RefCell::new(Arena::default());
+}
+
+impl Arena {
+    /// The index of `node`, created if new.
+    pub(crate) fn intern(&mut self, node: Node) -> u32 {
+        let key = node.parts();
+        if let Some(&i) = self.index.get(&key) {
+            return i;
+        }
+        if self.nodes.len() >= MAX_NODES {
+            self.overflowed = true;
+            return self.overflow_node();
+        }
+        let i = self.nodes.len() as u32;
+        self.nodes.push(node);
+        self.index.insert(key, i);
+        i
+    }
+
+    fn overflow_node(&mut self) -> u32 {
+        // the first node is reserved at a trace's start for this purpose
+        0
+    }
+
+    /// Ends a trace: empties the arena and gives its memory back.
+    pub(crate) fn release(&mut self) {
+        self.reset();
+        self.nodes.shrink_to_fit();
+        self.index = HashMap::new();
+        self.branches = Vec::new();
+    }
+
+    /// Starts a trace: empties the arena (node 0 is the overflow marker).
+    pub(crate) fn reset(&mut self) {
+        self.nodes.clear();
+        self.index.clear();
+        self.branches.clear();
+        self.overflowed = false;
+        self.generation = self.generation.wrapping_add(1);
+        self.nodes
+            .push(Node::Opaque("expression too large", 0, f64::NAN));
+    }
+}
+
+/// Whether two node ids are one expression: equal, and not the overflow marker (node 0, which
+/// every node beyond [`MAX_NODES`] collapses onto).
+fn same(a: u32, b: u32) -> bool {
+    a == b && a != 0
+}
+
+/// An expression: a handle into the current trace's arena and its value at the trace point.
+/// `Copy`, so it is the inner type of num-dual's `Dual`, `Dual2` and `HyperDual` under the
+/// library's bound (`D: DualNum<Primitive = f64> + Copy`).
+#[derive(Debug, Clone, Copy)]
+pub struct Expr {
+    pub(crate) id: u32,
+    pub(crate) generation: u32,
+    /// The value at the trace point.
+    pub(crate) value: f64,
+}
+
+impl Expr {
+    /// The value at the trace point.
+    pub fn value(&self) -> f64 {
+        self.value
+    }
+
+    /// Whether this handle belongs to the running trace.
+    pub fn is_live(&self) -> bool {
+        ARENA.with(|a| a.borrow().generation == self.generation)
+    }
+
+    pub(crate) fn make(node: Node, value: f64) -> Expr {
+        ARENA.with(|a| {
+            let mut a = a.borrow_mut();
+            if a.nodes.is_empty() {
+                // used outside a trace: start one implicitly
+                a.reset();
+            }
+            let id = a.intern(node);
+            Expr {
+                id,
+                generation: a.generation,
+                value,
+            }
+        })
+    }
+
+    /// The constant `x`.
+    pub fn constant(x: f64) -> Expr {
+        Expr::make(Node::Num(x), x)
+    }
+
+    pub(crate) fn node(&self) -> Option<Node> {
+        ARENA.with(|a| {
+            let a = a.borrow();
+            (a.generation == self.generation)
+                .then(|| a.nodes.get(self.id as usize).copied())
+                .flatten()
+        })
+    }
+
+    /// The constant this expression is, if it is one.
+    pub fn as_constant(&self) -> Option<f64> {
+        match self.node() {
+            Some(Node::Num(x)) => Some(x),
+            _ => None,
+        }
+    }
+
+    /// Records that the numeric path branched on this expression (`what` of its value).
+    pub(crate) fn branch(&self, what: &'static str) {
+        if self.as_constant().is_some() {
+            return;
+        }
+        ARENA.with(|a| {
+            let mut a = a.borrow_mut();
+            if a.generation == self.generation {
+                let entry = (self.id, what, self.value);
+                if !a.branches.contains(&entry) {
+                    a.branches.push(entry);
+                }
+            }
+        });
+    }
+
+    // ---- constructors that simplify (module docs of `crate::symbolic`) ----
+
+    pub(crate) fn add(a: Expr, b: Expr) -> Expr {
+        let value = a.value + b.value;
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Expr::constant(x + y),
+            (Some(0.0), _) => b,
+            (_, Some(0.0)) => a,
+            _ => {
+                if let Some(Node::Neg(na)) = a.node() {
+                    if same(na, b.id) {
+                        return Expr::constant(0.0);
+                    }
+                }
+                if let Some(Node::Neg(nb)) = b.node() {
+                    if same(nb, a.id) {
+                        return Expr::constant(0.0);
+                    }
+                }
+                if same(a.id, b.id) {
+                    return Expr::mul(Expr::constant(2.0), a);
+                }
+                Expr::make(Node::Add(a.id, b.id), value)
+            }
+        }
+    }
+
+    pub(crate) fn neg(a: Expr) -> Expr {
+        match (a.as_constant(), a.node()) {
+            (Some(x), _) => Expr::constant(-x),
+            (_, Some(Node::Neg(inner))) => Expr::from_id(inner, -a.value, a.generation),
+            _ => Expr::make(Node::Neg(a.id), -a.value),
+        }
+    }
+
+    fn from_id(id: u32, value: f64, generation: u32) -> Expr {
+        Expr {
+            id,
+            generation,
+            value,
+        }
+    }
+
+    pub(crate) fn sub(a: Expr, b: Expr) -> Expr {
+        Expr::add(a, Expr::neg(b))
+    }
+
+    pub(crate) fn mul(a: Expr, b: Expr) -> Expr {
+        let value = a.value * b.value;
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Expr::constant(x * y),
+            (Some(0.0), _) | (_, Some(0.0)) => Expr::constant(0.0),
+            (Some(1.0), _) => b,
+            (_, Some(1.0)) => a,
+            (Some(-1.0), _) => Expr::neg(b),
+            (_, Some(-1.0)) => Expr::neg(a),
+            // constants first, signs pulled out
+            (None, Some(_)) => Expr::mul(b, a),
+            _ => match (a.node(), b.node()) {
+                (Some(Node::Neg(x)), _) => {
+                    Expr::neg(Expr::mul(Expr::from_id(x, -a.value, a.generation), b))
+                }
+                (_, Some(Node::Neg(y))) => {
+                    Expr::neg(Expr::mul(a, Expr::from_id(y, -b.value, b.generation)))
+                }
+                _ if same(a.id, b.id) => Expr::powi(a, 2),
+                _ => Expr::make(Node::Mul(a.id, b.id), value),
+            },
+        }
+    }
+
+    pub(crate) fn div(a: Expr, b: Expr) -> Expr {
+        let value = a.value / b.value;
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Expr::constant(x / y),
+            (Some(0.0), _) => Expr::constant(0.0),
+            (_, Some(1.0)) => a,
+            (_, Some(-1.0)) => Expr::neg(a),
+            _ if same(a.id, b.id) => Expr::constant(1.0),
+            _ => Expr::make(Node::Div(a.id, b.id), value),
+        }
+    }
+
+    pub(crate) fn powi(a: Expr, n: i32) -> Expr {
+        let value = a.value.powi(n);
+        match (a.as_constant(), n) {
+            (Some(x), _) => Expr::constant(x.powi(n)),
+            (_, 0) => Expr::constant(1.0),
+            (_, 1) => a,
+            _ => Expr::make(Node::Powi(a.id, n), value),
+        }
+    }
+
+    pub(crate) fn powf(a: Expr, x: f64) -> Expr {
+        if x.fract() == 0.0 && x.abs() <= i32::MAX as f64 {
+            return Expr::powi(a, x as i32);
+        }
+        if x == 0.5 {
+            return Expr::apply(Func::Sqrt, a);
+        }
+        match a.as_constant() {
+            Some(c) => Expr::constant(c.powf(x)),
+            None => Expr::make(Node::Powf(a.id, x), a.value.powf(x)),
+        }
+    }
+
+    pub(crate) fn pow(a: Expr, b: Expr) -> Expr {
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Expr::constant(x.powf(y)),
+            (_, Some(y)) => Expr::powf(a, y),
+            _ => Expr::make(Node::Pow(a.id, b.id), a.value.powf(b.value)),
+        }
+    }
+
+    pub(crate) fn apply(f: Func, a: Expr) -> Expr {
+        if f == Func::Abs {
+            a.branch(if a.value >= 0.0 { "≥ 0" } else { "< 0" });
+        }
+        match a.as_constant() {
+            Some(x) => Expr::constant(f.apply(x)),
+            None => Expr::make(Node::Apply(f, a.id), f.apply(a.value)),
+        }
+    }
+
+    pub(crate) fn atan2(a: Expr, b: Expr) -> Expr {
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Expr::constant(x.atan2(y)),
+            _ => Expr::make(Node::Atan2(a.id, b.id), a.value.atan2(b.value)),
+        }
+    }
+
+    pub(crate) fn opaque(what: &'static str, a: Expr, value: f64) -> Expr {
+        Expr::make(Node::Opaque(what, a.id, value), value)
+    }
+}
