@@ -371,4 +371,6 @@ fn a_trace_beyond_the_node_limit_is_a_typed_error() {
     }
     assert!(matches!(trace.formula(&e), Err(Error::TooLarge { .. })));
     assert!(e.value().is_finite());
+    // printing an overflowed expression terminates and says so
+    assert!(format!("{e}").contains("<expression too large>"));
 }

@@ -135,6 +135,8 @@ pub enum Node {
     Atan2(u32, u32),
     /// An operation without a formula (`%`, …), with its value at the trace point.
     Opaque(&'static str, u32, f64),
+    /// Every node beyond [`MAX_NODES`] (a leaf: the trace's formulas are refused).
+    TooLarge,
 }
 
 impl Node {
@@ -155,6 +157,7 @@ impl Node {
             Node::Apply(f, a) => (9, w(a), f as u64, ""),
             Node::Atan2(a, b) => (10, w(a), w(b), ""),
             Node::Opaque(n, a, v) => (11, w(a), v.to_bits(), n),
+            Node::TooLarge => (12, 0, 0, ""),
         }
     }
 }
@@ -213,8 +216,7 @@ impl Arena {
         self.branches.clear();
         self.overflowed = false;
         self.generation = self.generation.wrapping_add(1);
-        self.nodes
-            .push(Node::Opaque("expression too large", 0, f64::NAN));
+        self.nodes.push(Node::TooLarge);
     }
 }
 

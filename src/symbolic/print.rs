@@ -97,6 +97,7 @@ impl Formula {
                 Node::Apply(f, a) => f.apply(v[a as usize]),
                 Node::Atan2(a, b) => v[a as usize].atan2(v[b as usize]),
                 Node::Opaque(_, _, value) => value,
+                Node::TooLarge => f64::NAN,
             };
             v.push(x);
         }
@@ -171,6 +172,7 @@ impl Formula {
             Node::Apply(f, a) => (format!("{}({})", f.name(), self.text(a).0), 5),
             Node::Atan2(a, b) => (format!("atan2({}, {})", self.text(a).0, self.text(b).0), 5),
             Node::Opaque(what, a, _) => (format!("{what}[{}]", self.text(a).0), 5),
+            Node::TooLarge => ("<expression too large>".into(), 5),
         }
     }
 }
@@ -187,7 +189,7 @@ fn children(node: &Node) -> [Option<u32>; 2] {
         | Node::Powf(a, _)
         | Node::Apply(_, a)
         | Node::Opaque(_, a, _) => [Some(a), None],
-        Node::Num(_) | Node::Var(_) => [None, None],
+        Node::Num(_) | Node::Var(_) | Node::TooLarge => [None, None],
     }
 }
 
