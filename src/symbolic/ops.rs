@@ -232,7 +232,39 @@ impl fmt::Display for Expr {
     }
 }
 
+/// The `DualNum` functions that are one [`Func`] node each: `fn sin(&self) -> Expr`, ….
+macro_rules! applied {
+    ($($name:ident => $func:ident,)*) => {
+        $(
+            fn $name(&self) -> Expr {
+                Expr::apply(Func::$func, *self)
+            }
+        )*
+    };
+}
+
 impl DualNum for Expr {
+    applied! {
+        sqrt => Sqrt,
+        cbrt => Cbrt,
+        exp => Exp,
+        ln => Ln,
+        sin => Sin,
+        cos => Cos,
+        tan => Tan,
+        asin => Asin,
+        acos => Acos,
+        atan => Atan,
+        sinh => Sinh,
+        cosh => Cosh,
+        tanh => Tanh,
+        asinh => Asinh,
+        acosh => Acosh,
+        atanh => Atanh,
+        sph_j0 => SphJ0,
+        sph_j1 => SphJ1,
+        sph_j2 => SphJ2,
+    }
     type Primitive = f64;
     const NDERIV: usize = 0;
     type InnerDual = Expr;
@@ -252,23 +284,11 @@ impl DualNum for Expr {
     fn powf(&self, n: f64) -> Expr {
         Expr::powf(*self, n)
     }
-    fn sqrt(&self) -> Expr {
-        Expr::apply(Func::Sqrt, *self)
-    }
-    fn cbrt(&self) -> Expr {
-        Expr::apply(Func::Cbrt, *self)
-    }
-    fn exp(&self) -> Expr {
-        Expr::apply(Func::Exp, *self)
-    }
     fn exp2(&self) -> Expr {
         Expr::pow(Expr::constant(2.0), *self)
     }
     fn exp_m1(&self) -> Expr {
         Expr::sub(Expr::apply(Func::Exp, *self), Expr::constant(1.0))
-    }
-    fn ln(&self) -> Expr {
-        Expr::apply(Func::Ln, *self)
     }
     fn log(&self, base: f64) -> Expr {
         Expr::div(Expr::apply(Func::Ln, *self), Expr::constant(base.ln()))
@@ -282,55 +302,10 @@ impl DualNum for Expr {
     fn ln_1p(&self) -> Expr {
         Expr::apply(Func::Ln, Expr::add(Expr::constant(1.0), *self))
     }
-    fn sin(&self) -> Expr {
-        Expr::apply(Func::Sin, *self)
-    }
-    fn cos(&self) -> Expr {
-        Expr::apply(Func::Cos, *self)
-    }
-    fn tan(&self) -> Expr {
-        Expr::apply(Func::Tan, *self)
-    }
     fn sin_cos(&self) -> (Expr, Expr) {
         (self.sin(), self.cos())
     }
-    fn asin(&self) -> Expr {
-        Expr::apply(Func::Asin, *self)
-    }
-    fn acos(&self) -> Expr {
-        Expr::apply(Func::Acos, *self)
-    }
-    fn atan(&self) -> Expr {
-        Expr::apply(Func::Atan, *self)
-    }
     fn atan2(&self, other: Expr) -> Expr {
         Expr::atan2(*self, other)
-    }
-    fn sinh(&self) -> Expr {
-        Expr::apply(Func::Sinh, *self)
-    }
-    fn cosh(&self) -> Expr {
-        Expr::apply(Func::Cosh, *self)
-    }
-    fn tanh(&self) -> Expr {
-        Expr::apply(Func::Tanh, *self)
-    }
-    fn asinh(&self) -> Expr {
-        Expr::apply(Func::Asinh, *self)
-    }
-    fn acosh(&self) -> Expr {
-        Expr::apply(Func::Acosh, *self)
-    }
-    fn atanh(&self) -> Expr {
-        Expr::apply(Func::Atanh, *self)
-    }
-    fn sph_j0(&self) -> Expr {
-        Expr::apply(Func::SphJ0, *self)
-    }
-    fn sph_j1(&self) -> Expr {
-        Expr::apply(Func::SphJ1, *self)
-    }
-    fn sph_j2(&self) -> Expr {
-        Expr::apply(Func::SphJ2, *self)
     }
 }

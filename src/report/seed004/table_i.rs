@@ -14,6 +14,7 @@ use crate::report::plot2d::Figure2d;
 use crate::report::seed004::letters::letter_a;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed004::{self as data, LETTER_FIGURES};
+use crate::shapes::TOLERANCE_FRACTION;
 use polars::prelude::Column;
 use std::sync::OnceLock;
 
@@ -346,9 +347,9 @@ pub fn letters_and_coast() -> Result<Table> {
     let (mut methods, mut printed, mut ours, mut per, mut params) =
         (vec![], vec![], vec![], vec![], vec![]);
     let (mut errs, mut within, mut decimated) = (vec![], vec![], vec![]);
-    let coast_size = contour_tolerance(std::slice::from_ref(&coast)) / 0.01;
+    let coast_size = contour_tolerance(std::slice::from_ref(&coast)) / TOLERANCE_FRACTION;
     for (job, r) in rows {
-        let size = r.tolerance / 0.01;
+        let size = r.tolerance / TOLERANCE_FRACTION;
         names.push(job.0.clone());
         methods.push(format!("{:?}", job.2));
         printed.push(job.3.map(|n| n as u32));
