@@ -527,8 +527,8 @@ impl Family {
 /// How far the search goes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchOptions {
-    /// The most points (as counted) tried; never more distinct points than the target's
-    /// reference has vertices.
+    /// The most points (as counted) tried; never more distinct points than
+    /// [`max_distinct_for`] the target.
     pub max_points: usize,
     /// Error evaluations per count and start, per free coordinate (at least 50 and at most
     /// [`MAX_EVALUATIONS`] in all).
@@ -562,10 +562,11 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     }
     let mut evaluations = 0;
     let min = min_distinct(family, target.closed);
-    // more distinct points than the reference has vertices cannot help: the count is capped
-    // there, which also bounds the search's cost for any `max_points`
+    // the count is capped at a few points per reference segment (points may sit anywhere on
+    // a segment: a polygon's sides need them), which bounds the search's cost for any
+    // `max_points`
     let max = distinct_of(family, target.closed, options.max_points)
-        .min(target.reference().len())
+        .min(max_distinct_for(target))
         .max(min);
     let known = options.known.clone().filter(|k| k.within_tolerance);
     let mut found: Option<(usize, Choice)> =
@@ -622,6 +623,12 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     };
     choice.evaluations = evaluations;
     Ok(choice)
+}
+
+/// The most distinct points the search tries on `target`: four per reference vertex, at
+/// least 64.
+pub fn max_distinct_for(target: &Target) -> usize {
+    target.reference().len().saturating_mul(4).max(64)
 }
 
 /// The fewest distinct points of a family: 3 closed (Angular and cardinal: 3 + 3 repeats),
