@@ -223,3 +223,16 @@ fn the_table_i_outputs_build() {
     assert_eq!(table.df.height(), 36);
     assert_eq!(report::table("table-i-cross").unwrap().df.height(), 9 * 12);
 }
+
+#[test]
+fn a_polygon_with_few_vertices_gets_points_on_its_sides() {
+    // the polygonal letter a's outer contour has 8 vertices; the Angular spline needs the 8
+    // corners and a point inside every side (16 + 3 counted), more points than vertices
+    let outer = &splinelab::seeds::seed004::polygonal_a()[0];
+    let tolerance = splinelab::comparison::contour_tolerance(std::slice::from_ref(outer));
+    let target = Target::polyline(outer, true, tolerance).unwrap();
+    let c = fewest_points(&target, Family::Angular, &SearchOptions::default()).unwrap();
+    assert!(c.within_tolerance, "{:?}", c.measure);
+    assert!(c.measure.counted <= 19, "{}", c.measure.counted);
+    assert!(c.points.len() > outer.len());
+}
