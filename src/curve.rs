@@ -28,6 +28,15 @@ pub trait ParametricCurve<const N: usize> {
     /// The parameter domain `[a, b]`.
     fn domain(&self) -> (f64, f64);
 
+    /// The piece of a piecewise curve that [`ParametricCurve::eval`] uses at `t`: the span on
+    /// which the formula traced there holds ([`crate::symbolic::curve_formulas`]). `None`
+    /// (the default) for a curve that is one formula over its whole domain; every piecewise
+    /// curve of the crate overrides it.
+    fn span_at(&self, t: f64) -> Option<crate::domain::Span> {
+        let _ = t;
+        None
+    }
+
     /// `C(t)`.
     fn point(&self, t: f64) -> SVector<f64, N> {
         self.eval(t)

@@ -249,6 +249,44 @@ impl Partition {
     }
 }
 
+/// The parameter interval of one piece of a piecewise curve or surface, on which one formula
+/// holds: `[lo, hi)`, or `[lo, hi]` for the last piece (within the domain; the end pieces also
+/// extrapolate beyond it where the object does).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Span {
+    /// The left end (included).
+    pub lo: f64,
+    /// The right end.
+    pub hi: f64,
+    /// Whether `hi` is included (the last piece).
+    pub closed: bool,
+}
+
+impl Span {
+    /// Piece `k` of increasing `nodes`: `[nodes[k], nodes[k + 1])`, closed if it is the last.
+    pub(crate) fn of(nodes: &[f64], k: usize) -> Span {
+        Span {
+            lo: nodes[k],
+            hi: nodes[k + 1],
+            closed: k + 2 == nodes.len(),
+        }
+    }
+
+    /// Whether `x` lies in the span.
+    pub fn contains(&self, x: f64) -> bool {
+        x >= self.lo && (x < self.hi || (self.closed && x == self.hi))
+    }
+}
+
+impl std::fmt::Display for Span {
+    /// `[1/4, 1/2)`, `[3/4, 1]` (ends printed as [`crate::symbolic::number`]).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use crate::symbolic::number;
+        let close = if self.closed { ']' } else { ')' };
+        write!(f, "[{}, {}{close}", number(self.lo), number(self.hi))
+    }
+}
+
 /// Index `i` of the interval `[xᵢ, xᵢ₊₁)` of increasing `nodes` (at least 2) holding `x`: the
 /// right end belongs to the last interval, points outside go to the nearest end interval
 /// (which the piecewise objects extrapolate), NaN to the first. The one interval search of the

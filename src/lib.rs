@@ -79,7 +79,7 @@ pub use bspline::curve::BSplineCurve;
 pub use bspline::fit::{fit_bspline, BSplineFit};
 pub use bspline::knots::{EndKnots, KnotVector};
 pub use curve::{signed_curvature, ParametricCurve};
-pub use domain::{Interval, Partition, Rect};
+pub use domain::{Interval, Partition, Rect, Span};
 pub use error::{Error, Result};
 pub use grid::Grid;
 pub use hermite::basis::hermite_basis;

@@ -231,6 +231,11 @@ impl<const N: usize> ParametricCurve<N> for NurbsCurve<N> {
     fn domain(&self) -> (f64, f64) {
         self.basis.domain()
     }
+
+    /// The knot span of `t` ([`BSplineBasis::span_of`]).
+    fn span_at(&self, t: f64) -> Option<crate::domain::Span> {
+        Some(self.basis.span_of(t))
+    }
 }
 
 impl NurbsCurve<2> {

@@ -237,4 +237,20 @@ impl ParametricCurve<2> for Shape {
             Shape::Rectangle { width, height } => (0.0, 2.0 * (width + height)),
         }
     }
+
+    /// The rectangle's side of `t` (its corners are the breaks); the other shapes are one
+    /// formula.
+    fn span_at(&self, t: f64) -> Option<crate::domain::Span> {
+        let Shape::Rectangle { width, height } = *self else {
+            return None;
+        };
+        let sides = [height, width, height, width];
+        let mut breaks = [0.0; 5];
+        for k in 0..4 {
+            breaks[k + 1] = breaks[k] + sides[k];
+        }
+        // the side eval uses: the last k ≤ 3 with t ≥ breaks[k]
+        let k = (1..4).take_while(|&k| t >= breaks[k]).count();
+        Some(crate::domain::Span::of(&breaks, k))
+    }
 }

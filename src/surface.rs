@@ -30,6 +30,15 @@ pub trait ParametricSurface {
     /// `X(s, t)`. Must be written only with operations of [`DualNum`] so that derivatives
     /// propagate.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D>;
+
+    /// The pieces of a piecewise surface that [`ParametricSurface::eval`] uses at `(s, t)`:
+    /// the spans in `s` and in `t` on which the formula traced there holds
+    /// ([`crate::symbolic::surface_formulas`]). `None` (the default) for a surface that is one
+    /// formula everywhere; the spline surfaces of the crate override it.
+    fn span_at(&self, s: f64, t: f64) -> Option<[crate::domain::Span; 2]> {
+        let _ = (s, t);
+        None
+    }
 }
 
 /// A point and its first partials and mixed second partial, `X, X_s, X_t, X_st`.

@@ -6,8 +6,14 @@ use nalgebra::Vector3;
 use num_dual::DualNum;
 use num_traits::Signed;
 use proptest::prelude::*;
-use splinelab::symbolic::{number, surface_formulas, Expr, Trace, MAX_NODES};
-use splinelab::{Error, ParametricSurface, Sphere, SurfaceDerivatives, Torus};
+use splinelab::symbolic::{
+    bernstein_formulas, bspline_basis_formulas, curve_formulas, hermite_basis_formulas, number,
+    patch_formulas, surface_formulas, trace, Expr, Trace, MAX_FORMULA_DEPTH, MAX_NODES,
+};
+use splinelab::{
+    BSplineBasis, BSplineCurve, Error, HermitePatch, HermiteSpline, KnotVector, NurbsCurve,
+    ParametricCurve, ParametricSurface, Rect, Sphere, SurfaceDerivatives, Torus,
+};
 
 /// `|a − b| ≤ 1e-12 · max(1, |b|)`.
 fn close(a: f64, b: f64) -> bool {
@@ -200,11 +206,12 @@ fn torus_partials_are_codice_3s_formulas() {
         .iter()
         .map(|p| [p[0].plain(), p[1].plain(), p[2].plain()])
         .collect();
-    // Codice 3's closed forms (seed 000 §2), as the same eval that computes the numbers
-    // traced them; every one is also checked by evaluation below
+    // Codice 3's closed forms (seed 000 §2: f_x = (2 + cos(t)).*cos(s), …, and their
+    // derivatives), as the same eval that computes the numbers traced them; every one is
+    // also checked by evaluation below
     let expected = [
-        ["(cos(t) + 2)*cos(s)", "(cos(t) + 2)*sin(s)", "sin(t)"],
-        ["-sin(s)*(cos(t) + 2)", "cos(s)*(cos(t) + 2)", "0"],
+        ["(2 + cos(t))*cos(s)", "(2 + cos(t))*sin(s)", "sin(t)"],
+        ["-sin(s)*(2 + cos(t))", "cos(s)*(2 + cos(t))", "0"],
         ["-sin(t)*cos(s)", "-sin(t)*sin(s)", "cos(t)"],
         ["sin(s)*sin(t)", "-cos(s)*sin(t)", "0"],
     ];
@@ -240,6 +247,8 @@ enum Tree {
     Atan(Box<Tree>),
     Tanh(Box<Tree>),
     Powi(Box<Tree>, i32),
+    /// `a / (b² + 1)`: rational, never divides by zero
+    Rat(Box<Tree>, Box<Tree>),
 }
 
 impl Tree {
@@ -266,6 +275,10 @@ impl Tree {
             Tree::Atan(a) => a.eval(s, t).atan(),
             Tree::Tanh(a) => a.eval(s, t).tanh(),
             Tree::Powi(a, n) => a.eval(s, t).powi(*n),
+            Tree::Rat(a, b) => {
+                let d = b.eval(s, t);
+                a.eval(s, t) / (d * d + 1.0)
+            }
         }
     }
 }
@@ -300,6 +313,7 @@ fn tree() -> impl Strategy<Value = Tree> {
             inner.clone().prop_map(|a| Tree::Hyp(Box::new(a))),
             inner.clone().prop_map(|a| Tree::Atan(Box::new(a))),
             inner.clone().prop_map(|a| Tree::Tanh(Box::new(a))),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Tree::Rat(Box::new(a), Box::new(b))),
             (inner, 0i32..=3).prop_map(|(a, n)| Tree::Powi(Box::new(a), n)),
         ]
     })
@@ -372,5 +386,260 @@ fn a_trace_beyond_the_node_limit_is_a_typed_error() {
     assert!(matches!(trace.formula(&e), Err(Error::TooLarge { .. })));
     assert!(e.value().is_finite());
     // printing an overflowed expression terminates and says so
-    assert!(format!("{e}").contains("<expression too large>"));
+    assert!(format!("{e}").contains("expression nodes of a trace"));
+}
+
+#[test]
+fn torus_formulas_print_as_latex_and_well_formed_mathml() {
+    let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7).unwrap();
+    assert_eq!(f.point[0].latex(), "\\left(2 + \\cos(t)\\right) \\cos(s)");
+    assert_eq!(f.ds[0].latex(), "-\\sin(s) \\left(2 + \\cos(t)\\right)");
+    assert_eq!(f.dst[1].latex(), "-\\cos(s) \\sin(t)");
+    for p in [&f.point, &f.ds, &f.dt, &f.dst] {
+        for x in p {
+            balanced_tags(&x.mathml());
+        }
+    }
+    let table = f.table();
+    balanced_tags(&table.html().replace("<p>", "").replace("</p>", ""));
+    assert!(table.latex().starts_with("\\begin{array}{llll}"));
+}
+
+/// Every MathML tag is closed in order (a minimal well-formedness check).
+fn balanced_tags(xml: &str) {
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = xml;
+    while let Some(start) = rest.find('<') {
+        let end = rest[start..].find('>').expect("unclosed tag") + start;
+        let tag = &rest[start + 1..end];
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop().as_deref(), Some(name), "in {xml}");
+        } else if !tag.ends_with('/') {
+            stack.push(tag.split_whitespace().next().unwrap().to_string());
+        }
+        rest = &rest[end + 1..];
+    }
+    assert!(stack.is_empty(), "unclosed {stack:?} in {xml}");
+}
+
+#[test]
+fn the_bases_print_as_the_report_prints_them() {
+    let h: Vec<String> = hermite_basis_formulas()
+        .unwrap()
+        .iter()
+        .map(|f| f.plain())
+        .collect();
+    // seed 000 §1: H₀ = 1 − 3t² + 2t³; H₁ = t − 2t² + t³; H₂ = t³ − t²; H₃ = 3t² − 2t³
+    assert_eq!(
+        h,
+        [
+            "1 - 3*t^2 + 2*t^3",
+            "t - 2*t^2 + t^3",
+            "t^3 - t^2",
+            "3*t^2 - 2*t^3"
+        ]
+    );
+    let b: Vec<String> = bernstein_formulas(3)
+        .unwrap()
+        .iter()
+        .map(|f| f.plain())
+        .collect();
+    // seed 000 §4: B₀ = (1−t)³, B₁ = 3t(1−t)², B₂ = 3t²(1−t), B₃ = t³
+    assert_eq!(b, ["(1 - t)^3", "3*t*(1 - t)^2", "3*t^2*(1 - t)", "t^3"]);
+    // the Bernstein formulas of degree 7 equal C(7, i) tⁱ (1 − t)⁷⁻ⁱ, expanded too
+    let b7 = bernstein_formulas(7).unwrap();
+    for (i, f) in b7.iter().enumerate() {
+        let binomial = [1.0, 7.0, 21.0, 35.0, 35.0, 21.0, 7.0, 1.0][i];
+        for t in [0.1, 0.37, 0.9] {
+            let exact = binomial * t.powi(i as i32) * (1.0 - t).powi(7 - i as i32);
+            assert!(close(f.eval(&[t]), exact));
+            assert!(close(f.expanded().unwrap().eval(&[t]), exact));
+        }
+    }
+    assert!(matches!(
+        bernstein_formulas(65),
+        Err(Error::TooLarge { .. })
+    ));
+}
+
+#[test]
+fn like_terms_common_factors_and_signs() {
+    let out = trace([("x", 0.3), ("y", -1.2)], |[x, y]| {
+        vec![
+            x * y + y * x * 2.0,                         // 3*x*y
+            -(x.sin() * y) - x.sin() * 2.0,              // -sin(x)*(2 + y)
+            x * x.powi(-1),                              // 1
+            (x + 1.0) * 2.0 - x * 2.0,                   // 2
+            (x * x + 1.0).sqrt() * (x * x + 1.0).sqrt(), // 1 + x^2
+            x / 4.0 - y * 0.75,                          // x/4 - 3*y/4
+            (x * x).sqrt(),                              // sqrt(x^2): not x
+        ]
+    })
+    .unwrap();
+    let texts: Vec<String> = out.formulas.iter().map(|f| f.plain()).collect();
+    assert_eq!(
+        texts,
+        [
+            "3*x*y",
+            "-sin(x)*(2 + y)",
+            "1",
+            "2",
+            "1 + x^2",
+            "x/4 - 3*y/4",
+            "sqrt(x^2)"
+        ]
+    );
+}
+
+#[test]
+fn bspline_basis_formulas_hold_on_their_span() {
+    // seed 001's quadratic example, and near-coincident knots
+    for knots in [
+        vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0],
+        vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5 + 1e-6, 1.0, 1.0, 1.0, 1.0],
+    ] {
+        let p = if knots.len() == 7 { 2 } else { 3 };
+        let basis = BSplineBasis::new(KnotVector::new(knots), p);
+        for t0 in [0.1, 0.5, 0.7, 1.0] {
+            let b = bspline_basis_formulas(&basis, t0).unwrap();
+            assert!(b.span.contains(t0));
+            for k in 0..=4 {
+                let t = b.span.lo + (b.span.hi - b.span.lo) * k as f64 / 4.0;
+                if !b.span.contains(t) {
+                    continue;
+                }
+                for (j, f) in b.functions.iter().enumerate() {
+                    let want = basis.cox_de_boor(b.first + j, p, t);
+                    let v = f.eval(&[t]);
+                    assert!(
+                        (v - want).abs() <= 1e-9,
+                        "N_{} at {t}: {} = {v} vs {want}",
+                        b.first + j,
+                        f.plain()
+                    );
+                }
+            }
+        }
+    }
+    let basis = BSplineBasis::new(KnotVector::new(vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]), 2);
+    let b = bspline_basis_formulas(&basis, 0.6).unwrap();
+    assert_eq!(b.span.to_string(), "[0, 1)");
+    let texts: Vec<String> = b.functions.iter().map(|f| f.plain()).collect();
+    assert_eq!(texts, ["1 - 2*t + t^2", "2*t - 3*t^2/2", "t^2/2"]);
+    assert_eq!(
+        bspline_basis_formulas(&basis, 2.0)
+            .unwrap()
+            .span
+            .to_string(),
+        "[1, 2]"
+    );
+    assert!(matches!(
+        bspline_basis_formulas(&basis, f64::NAN),
+        Err(Error::NonFinite { .. })
+    ));
+}
+
+#[test]
+fn curve_formulas_hold_on_their_piece() {
+    use nalgebra::{Vector2, Vector3};
+    let circle = NurbsCurve::circle9(Vector2::new(0.5, -1.0), 2.0).unwrap();
+    let basis = BSplineBasis::new(
+        KnotVector::new(vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.7, 1.0, 1.0, 1.0, 1.0]),
+        3,
+    );
+    let pts: Vec<Vector3<f64>> = (0..6)
+        .map(|i| Vector3::new(i as f64, (i as f64).sin(), (i * i) as f64 / 4.0))
+        .collect();
+    let cubic = BSplineCurve::new(basis, pts);
+    for t0 in [0.1, 0.5, 0.95] {
+        let f = curve_formulas(&circle, t0).unwrap();
+        let span = f.span.unwrap();
+        assert!(span.contains(t0));
+        for t in [span.lo, 0.5 * (span.lo + span.hi), t0] {
+            let [p, d1, d2] = circle.derivatives2(t);
+            for k in 0..2 {
+                assert!(close(f.point[k].eval(&[t]), p[k]), "{}", f.point[k]);
+                assert!((f.d1[k].eval(&[t]) - d1[k]).abs() <= 1e-9 * d1.norm());
+                assert!((f.d2[k].eval(&[t]) - d2[k]).abs() <= 1e-8 * d2.norm().max(1.0));
+            }
+        }
+        let g = curve_formulas(&cubic, t0).unwrap();
+        let span = g.span.unwrap();
+        for t in [span.lo, 0.5 * (span.lo + span.hi)] {
+            let [p, d1, d2] = cubic.derivatives2(t);
+            for k in 0..3 {
+                assert!(close(g.point[k].eval(&[t]), p[k]), "{}", g.point[k]);
+                assert!(close(g.d1[k].eval(&[t]), d1[k]));
+                assert!((g.d2[k].eval(&[t]) - d2[k]).abs() <= 1e-9 * d2.norm().max(1.0));
+            }
+            // a cubic piece: the second derivative is linear, the formula a polynomial
+            assert!(!g.d2[0].plain().contains('/'));
+        }
+    }
+    assert!(matches!(
+        curve_formulas(&circle, f64::INFINITY),
+        Err(Error::NonFinite { .. })
+    ));
+}
+
+#[test]
+fn spline_surface_formulas_name_their_patch() {
+    let torus = Torus::new(2.0, 1.0);
+    let spline = HermiteSpline::uniform(&torus, &Rect::unit(), 4, 4).unwrap();
+    let f = surface_formulas(&spline, 0.3, 0.6).unwrap();
+    assert_eq!(f.branches[..2], ["s ∈ [1/4, 1/2)", "t ∈ [1/2, 3/4)"]);
+    for (s, t) in [(0.3, 0.6), (0.26, 0.74), (0.49, 0.5)] {
+        let d = spline.partials(s, t);
+        for k in 0..3 {
+            assert!(close(f.point[k].eval(&[s, t]), d.point[k]));
+            assert!(close(f.ds[k].eval(&[s, t]), d.ds[k]));
+            assert!(close(f.dt[k].eval(&[s, t]), d.dt[k]));
+            assert!((f.dst[k].eval(&[s, t]) - d.dst[k]).abs() <= 1e-10);
+        }
+    }
+    // a patch: H(s)ᵀ C H(t) with the basis exact, multiplied out to the same values
+    let patch = HermitePatch::from_surface(&torus, &Rect::unit());
+    let p = patch_formulas(&patch).unwrap();
+    assert_eq!(p.h_s[0].plain(), "1 - 3*s^2 + 2*s^3");
+    assert_eq!(p.h_t[3].plain(), "3*t^2 - 2*t^3");
+    for (s, t) in [(0.0, 0.0), (0.3, 0.8), (1.0, 1.0)] {
+        let x = patch.eval(s, t);
+        for k in 0..3 {
+            assert!(close(p.x[k].eval(&[s, t]), x[k]));
+        }
+    }
+}
+
+#[test]
+fn bad_input_gets_typed_errors() {
+    // NaN trace points
+    assert!(matches!(
+        surface_formulas(&Torus::default(), f64::NAN, 0.0),
+        Err(Error::NonFinite { .. })
+    ));
+    // a formula nested deeper than the printer recurses
+    let deep = trace([("x", 0.1)], |[x]| {
+        let mut e = x;
+        for _ in 0..MAX_FORMULA_DEPTH + 10 {
+            e = e.sin();
+        }
+        vec![e]
+    });
+    assert!(matches!(deep, Err(Error::TooLarge { .. })));
+    // multiplying out a huge power is refused, not attempted
+    let big = trace([("x", 0.1), ("y", 0.2)], |[x, y]| {
+        vec![(x + y + 1.0).powi(4000)]
+    })
+    .unwrap();
+    assert_eq!(big.formulas[0].plain(), "(1 + x + y)^4000");
+    assert!(matches!(
+        big.formulas[0].expanded(),
+        Err(Error::TooLarge { .. })
+    ));
+    assert_eq!(big.formulas[0].tidy().plain(), "(1 + x + y)^4000");
+    // NaN and infinite constants print and evaluate as themselves
+    let odd = trace([("x", 0.1)], |[x]| vec![x * f64::NAN, x + f64::INFINITY]).unwrap();
+    assert!(odd.formulas[0].eval(&[1.0]).is_nan());
+    assert_eq!(odd.formulas[1].eval(&[1.0]), f64::INFINITY);
+    assert!(odd.formulas[0].latex().contains("NaN"));
 }

@@ -139,14 +139,47 @@ fn torus_partials_table_shows_dual_equal_to_closed_form() {
     let t = tables::torus_partials().expect("partials table");
     assert_eq!(
         t.df.height(),
-        5 * 3 * 3,
-        "5 points × 3 partials × 3 coordinates"
+        5 * 4 * 3,
+        "5 points × (X and 3 partials) × 3 coordinates"
     );
-    let diff = t.df.column("abs_difference").expect("column");
-    let worst = (0..t.df.height())
-        .map(|i| diff.get(i).expect("cell").extract::<f64>().expect("f64"))
-        .fold(0.0, f64::max);
-    assert!(worst <= 1e-15, "largest |dual − closed form| = {worst:e}");
+    let worst = |name: &str| {
+        let col = t.df.column(name).expect("column");
+        (0..t.df.height())
+            .map(|i| col.get(i).expect("cell").extract::<f64>().expect("f64"))
+            .fold(0.0, f64::max)
+    };
+    let dual = worst("abs_difference");
+    assert!(dual <= 1e-15, "largest |dual − closed form| = {dual:e}");
+    // every one of the 12 formulas, evaluated, equals its hyper-dual value
+    let formula = worst("formula_abs_difference");
+    assert!(formula <= 1e-15, "largest |formula − dual| = {formula:e}");
+    let text = t.df.column("formula").expect("formula column");
+    let first: Vec<String> = (0..12)
+        .map(|i| {
+            text.get(i)
+                .expect("cell")
+                .get_str()
+                .expect("str")
+                .to_string()
+        })
+        .collect();
+    assert_eq!(
+        first,
+        [
+            "(2 + cos(t))*cos(s)",
+            "(2 + cos(t))*sin(s)",
+            "sin(t)",
+            "-sin(s)*(2 + cos(t))",
+            "cos(s)*(2 + cos(t))",
+            "0",
+            "-sin(t)*cos(s)",
+            "-sin(t)*sin(s)",
+            "cos(t)",
+            "sin(s)*sin(t)",
+            "-cos(s)*sin(t)",
+            "0",
+        ]
+    );
 }
 
 #[test]

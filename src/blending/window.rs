@@ -105,6 +105,11 @@ impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
     fn domain(&self) -> (f64, f64) {
         (0.0, self.segments as f64)
     }
+
+    /// `[k, k + 1)`, segment `k = ⌊s⌋`.
+    fn span_at(&self, s: f64) -> Option<crate::domain::Span> {
+        Some(crate::interp::angular::unit_span(s, self.segments))
+    }
 }
 
 /// The vertices the printed `bspline` procedure draws with `nb` line sections per segment

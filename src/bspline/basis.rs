@@ -136,6 +136,19 @@ impl BSplineBasis {
         (span..=n).find(|&s| k[s] < k[s + 1]).unwrap_or(span)
     }
 
+    /// The knot span `[t_ℓ, t_ℓ₊₁)` of `t` ([`BSplineBasis::find_span`]: the right end of the
+    /// domain belongs to the last non-empty span, which is then closed), on which every basis
+    /// function is one polynomial.
+    pub fn span_of(&self, t: f64) -> crate::domain::Span {
+        let span = self.find_span(t);
+        let k = self.knots.knots();
+        crate::domain::Span {
+            lo: k[span],
+            hi: k[span + 1],
+            closed: k[span + 1] >= self.domain().1,
+        }
+    }
+
     /// The `p + 1` basis functions that may be non-zero on span `span`,
     /// `N_{span−p,p}(t), …, N_{span,p}(t)`, written into `out`.
     ///
@@ -172,7 +185,15 @@ impl BSplineBasis {
             return;
         }
         let t0 = t.re();
-        let order = p.min(D::NDERIV);
+        // the Taylor expansion stops at NDERIV: exact for dual numbers of plain numbers,
+        // whose part beyond the real one is nilpotent. Under a symbolic trace the real part
+        // itself is a formula in t, so the span polynomial is expanded to its full degree p
+        // (exact for any t: the formula holds on the whole span, not only at t₀)
+        let order = if crate::symbolic::tracing() {
+            p
+        } else {
+            p.min(D::NDERIV)
+        };
         // derivatives with respect to z = (t − t₀)/w, w the span's width: wᵏ N⁽ᵏ⁾ stays of
         // the size of the values however narrow or wide the span, so nothing over- or
         // underflows on the way (and the value part is never touched by an overflow)

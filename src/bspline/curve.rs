@@ -140,6 +140,11 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
     fn domain(&self) -> (f64, f64) {
         self.basis.domain()
     }
+
+    /// The knot span of `t` ([`BSplineBasis::span_of`]).
+    fn span_at(&self, t: f64) -> Option<crate::domain::Span> {
+        Some(self.basis.span_of(t))
+    }
 }
 
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`

@@ -111,4 +111,10 @@ impl<const N: usize> ParametricCurve<N> for HermiteCurve<N> {
     fn domain(&self) -> (f64, f64) {
         (self.knots[0], self.knots[self.knots.len() - 1])
     }
+
+    /// `[uₖ, uₖ₊₁)`, the interval of `u`.
+    fn span_at(&self, u: f64) -> Option<crate::domain::Span> {
+        let k = crate::domain::locate(&self.knots, u);
+        Some(crate::domain::Span::of(&self.knots, k))
+    }
 }

@@ -245,4 +245,13 @@ impl ParametricSurface for HermiteSpline {
         let t = (v - iv.start()) / iv.width();
         self.patch(i, j).eval(s, t)
     }
+
+    /// The patch's intervals `[uᵢ, uᵢ₊₁) × [vⱼ, vⱼ₊₁)` (the last ones closed).
+    fn span_at(&self, u: f64, v: f64) -> Option<[crate::domain::Span; 2]> {
+        let (nu, nv) = (self.u.nodes(), self.v.nodes());
+        Some([
+            crate::domain::Span::of(nu, self.u.locate(u)),
+            crate::domain::Span::of(nv, self.v.locate(v)),
+        ])
+    }
 }

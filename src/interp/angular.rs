@@ -724,4 +724,39 @@ impl ParametricCurve<2> for AngularSpline {
     fn domain(&self) -> (f64, f64) {
         (0.0, self.pieces() as f64)
     }
+
+    /// `[j, j + 1)`, piece `j = ⌊u⌋` (the last one closed); the half `[j, j + ½)` or
+    /// `[j + ½, j + 1)` of an inflection piece, whose two arcs are two formulas.
+    fn span_at(&self, u: f64) -> Option<crate::domain::Span> {
+        let whole = unit_span(u, self.pieces());
+        let j = whole.lo as usize;
+        if self.kinds[j] != PieceKind::Inflection {
+            return Some(whole);
+        }
+        let mid = whole.lo + 0.5;
+        Some(if u - whole.lo < 0.5 {
+            crate::domain::Span {
+                lo: whole.lo,
+                hi: mid,
+                closed: false,
+            }
+        } else {
+            crate::domain::Span { lo: mid, ..whole }
+        })
+    }
+}
+
+/// Piece `j = ⌊u⌋` of `pieces` unit pieces, `[j, j + 1)`, clamped to the first and last (the
+/// last closed).
+pub(crate) fn unit_span(u: f64, pieces: usize) -> crate::domain::Span {
+    let j = if u.is_nan() || u <= 0.0 {
+        0
+    } else {
+        (u.floor() as usize).min(pieces.saturating_sub(1))
+    };
+    crate::domain::Span {
+        lo: j as f64,
+        hi: j as f64 + 1.0,
+        closed: j + 1 >= pieces,
+    }
 }

@@ -133,4 +133,8 @@ impl<const N: usize> ParametricCurve<N> for CardinalSpline<N> {
     fn domain(&self) -> (f64, f64) {
         (0.0, self.segments() as f64)
     }
+
+    fn span_at(&self, u: f64) -> Option<crate::domain::Span> {
+        self.hermite.span_at(u)
+    }
 }

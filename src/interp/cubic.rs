@@ -283,6 +283,11 @@ impl<const N: usize> ParametricCurve<N> for CubicSpline<N> {
     fn domain(&self) -> (f64, f64) {
         (self.x[0], self.x[self.x.len() - 1])
     }
+
+    /// `[xᵢ, xᵢ₊₁)`, the interval of `x`.
+    fn span_at(&self, x: f64) -> Option<crate::domain::Span> {
+        Some(crate::domain::Span::of(&self.x, self.interval(x)))
+    }
 }
 
 impl CubicSpline<1> {

@@ -84,4 +84,12 @@ impl<const N: usize> ParametricCurve<N> for PiecewiseLinear<N> {
     fn domain(&self) -> (f64, f64) {
         (self.x[0], self.x[self.x.len() - 1])
     }
+
+    /// `[xₖ, xₖ₊₁)`, the interval of `x`.
+    fn span_at(&self, x: f64) -> Option<crate::domain::Span> {
+        Some(crate::domain::Span::of(
+            &self.x,
+            crate::domain::locate(&self.x, x),
+        ))
+    }
 }

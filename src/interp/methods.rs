@@ -220,4 +220,14 @@ impl ParametricCurve<2> for Interpolant {
             Interpolant::Linear(c) => c.domain(),
         }
     }
+
+    fn span_at(&self, t: f64) -> Option<crate::domain::Span> {
+        match self {
+            Interpolant::Angular(c) => c.span_at(t),
+            Interpolant::Cardinal(c) => c.span_at(t),
+            Interpolant::Cubic(c) => c.span_at(t),
+            Interpolant::BSpline(c) => c.span_at(t),
+            Interpolant::Linear(c) => c.span_at(t),
+        }
+    }
 }

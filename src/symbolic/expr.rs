@@ -173,6 +173,8 @@ pub(crate) struct Arena {
     pub(crate) overflowed: bool,
     /// Conditions the trace's values took on `re()` branches (`abs`, comparisons…).
     pub(crate) branches: Vec<(u32, &'static str, f64)>,
+    /// Whether a trace is running (from its start to its end).
+    pub(crate) live: bool,
 }
 
 thread_local! {
@@ -204,6 +206,7 @@ impl Arena {
     /// Ends a trace: empties the arena and gives its memory back.
     pub(crate) fn release(&mut self) {
         self.reset();
+        self.live = false;
         self.nodes.shrink_to_fit();
         self.index = HashMap::new();
         self.branches = Vec::new();
@@ -215,6 +218,7 @@ impl Arena {
         self.index.clear();
         self.branches.clear();
         self.overflowed = false;
+        self.live = true;
         self.generation = self.generation.wrapping_add(1);
         self.nodes.push(Node::TooLarge);
     }

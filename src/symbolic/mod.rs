@@ -36,21 +36,36 @@
 //! **No formula:** `%` gives an opaque node carrying its numeric value (printed `rem[…]`);
 //! parsing (`Num::from_str_radix`) is an error.
 
+mod canon;
+mod display;
 mod expr;
+mod formulas;
 mod ops;
 mod print;
 
+pub use canon::{MAX_EXPANDED_TERMS, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+pub use display::{Math, MathTable};
 pub use expr::{Expr, Func, Node, MAX_NODES};
+pub use formulas::{
+    bernstein_formulas, bspline_basis_formulas, curve_formulas, hermite_basis_formulas,
+    patch_formulas, surface_formulas, trace, BasisFormulas, CurveFormulas, PatchFormulas,
+    SurfaceFormulas, Traced,
+};
 pub use print::{number, Formula};
 
 use crate::error::{Error, Result};
-use crate::surface::ParametricSurface;
 use expr::ARENA;
-use num_dual::HyperDual;
 use std::cell::RefCell;
 
 thread_local! {
     static NAMES: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Whether a symbolic trace is live on this thread: generic code that uses the numeric value
+/// of its argument beyond branching (a truncated Taylor expansion exact only for dual numbers
+/// of plain numbers) takes its exact form instead.
+pub(crate) fn tracing() -> bool {
+    ARENA.with(|a| a.borrow().live)
 }
 
 pub(crate) fn current_names() -> Vec<String> {
@@ -113,7 +128,7 @@ impl Trace {
                 reason: "the expression belongs to a trace that has ended",
             });
         }
-        Ok(Formula::capture(e, &current_names()))
+        Formula::capture(e, &current_names())
     }
 
     /// The conditions the numeric path took on the way (`s - 1/4 > 0`, …), in order.
@@ -128,7 +143,10 @@ impl Trace {
                     generation: self.generation,
                     value,
                 };
-                format!("{} {what}", Formula::capture(&e, &names).plain())
+                match Formula::capture(&e, &names) {
+                    Ok(f) => format!("{} {what}", f.plain()),
+                    Err(err) => format!("<{err}> {what}"),
+                }
             })
             .collect()
     }
@@ -149,54 +167,4 @@ impl Drop for Trace {
             }
         });
     }
-}
-
-/// The formulas of `X`, `X_s`, `X_t`, `X_st` of a surface (each a coordinate triple), traced
-/// at `(s, t)`, with the branches the evaluation took there.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SurfaceFormulas {
-    /// `X(s, t)`.
-    pub point: [Formula; 3],
-    /// `X_s`.
-    pub ds: [Formula; 3],
-    /// `X_t`.
-    pub dt: [Formula; 3],
-    /// `X_st`.
-    pub dst: [Formula; 3],
-    /// The conditions under which the formulas hold (empty: everywhere the evaluation is
-    /// defined).
-    pub branches: Vec<String>,
-}
-
-/// The formulas of any [`ParametricSurface`]: its own generic `eval` run on hyper-dual
-/// numbers of expressions, variables `s` and `t`.
-///
-/// # Errors
-/// As [`Trace::formula`] (an expression beyond [`MAX_NODES`]).
-pub fn surface_formulas<S: ParametricSurface + ?Sized>(
-    surface: &S,
-    s: f64,
-    t: f64,
-) -> Result<SurfaceFormulas> {
-    let mut trace = Trace::new();
-    let (sv, tv) = (trace.var("s", s), trace.var("t", t));
-    let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
-    let sh = HyperDual::new(sv, one, zero, zero);
-    let th = HyperDual::new(tv, zero, one, zero);
-    let x = surface.eval(sh, th);
-    let part = |f: &dyn Fn(&HyperDual<Expr>) -> Expr| -> Result<[Formula; 3]> {
-        Ok([
-            trace.formula(&f(&x[0]))?,
-            trace.formula(&f(&x[1]))?,
-            trace.formula(&f(&x[2]))?,
-        ])
-    };
-    let out = SurfaceFormulas {
-        point: part(&|d| d.re)?,
-        ds: part(&|d| d.eps1)?,
-        dt: part(&|d| d.eps2)?,
-        dst: part(&|d| d.eps1eps2)?,
-        branches: trace.branches(),
-    };
-    Ok(out)
 }

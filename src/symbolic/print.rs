@@ -1,183 +1,196 @@
-//! Formulas owned outside the arena, their evaluation and their printing (plain text, with
-//! operator precedence and no redundant brackets; constants that are small rationals exactly
-//! printed as fractions, others as the shortest decimal that reads back to the same `f64`).
+//! Formulas owned outside the arena (in the normal form of [`super::canon`]), their
+//! evaluation and their printing as plain text and as LaTeX, from one printer: operator
+//! precedence respected and no redundant brackets; constants that are exactly small
+//! rationals printed as fractions, others as the shortest decimal that reads back to the
+//! same `f64`.
 
-use super::expr::{Expr, Node, ARENA};
+use super::canon::{Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+use super::expr::{Expr, Func, Node, ARENA};
+use crate::error::{Error, Result};
 use std::collections::HashMap;
+use std::rc::Rc;
 
-/// A formula copied out of a trace: its nodes (children before parents, the root last) and
-/// the names of its variables.
+/// A formula copied out of a trace and simplified ([`crate::symbolic`]): evaluate it, print it
+/// as plain text or LaTeX, multiply it out.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Formula {
-    nodes: Vec<Node>,
+    root: Sum,
     names: Vec<String>,
 }
 
 impl Formula {
-    /// The formula of `e`, copied out of the running trace, with variable names `names`
-    /// (a stale handle gives the constant NaN, flagged as not live by [`Expr::is_live`]).
-    pub(crate) fn capture(e: &Expr, names: &[String]) -> Formula {
-        ARENA.with(|a| {
+    /// The formula of `e`, copied out of the running trace and simplified, with variable
+    /// names `names`.
+    ///
+    /// # Errors
+    /// [`Error::Degenerate`] for a handle of another trace; [`Error::TooLarge`] beyond
+    /// [`MAX_FORMULA_SIZE`] or [`MAX_FORMULA_DEPTH`].
+    pub(crate) fn capture(e: &Expr, names: &[String]) -> Result<Formula> {
+        let root = ARENA.with(|a| {
             let a = a.borrow();
-            let mut nodes = Vec::new();
             if a.generation != e.generation || e.id as usize >= a.nodes.len() {
-                nodes.push(Node::Num(f64::NAN));
-                return Formula {
-                    nodes,
-                    names: names.to_vec(),
-                };
+                return Err(Error::Degenerate {
+                    what: "symbolic formula",
+                    reason: "the expression belongs to a trace that has ended",
+                });
             }
-            let mut map: HashMap<u32, u32> = HashMap::new();
-            // iterative post-order copy
-            let mut stack = vec![(e.id, false)];
-            while let Some((id, done)) = stack.pop() {
-                if map.contains_key(&id) {
-                    continue;
-                }
-                let node = a.nodes[id as usize];
-                let kids = children(&node);
-                if !done {
-                    stack.push((id, true));
-                    for k in kids.into_iter().flatten() {
-                        if !map.contains_key(&k) {
-                            stack.push((k, false));
-                        }
+            // the nodes the root depends on; children always precede parents in the arena
+            let mut reach = vec![e.id];
+            let mut seen = std::collections::HashSet::from([e.id]);
+            let mut k = 0;
+            while k < reach.len() {
+                for c in children(&a.nodes[reach[k] as usize]).into_iter().flatten() {
+                    if seen.insert(c) {
+                        reach.push(c);
                     }
-                    continue;
                 }
-                let m = |k: u32| map[&k];
-                let copied = match node {
-                    Node::Add(x, y) => Node::Add(m(x), m(y)),
-                    Node::Mul(x, y) => Node::Mul(m(x), m(y)),
-                    Node::Div(x, y) => Node::Div(m(x), m(y)),
-                    Node::Neg(x) => Node::Neg(m(x)),
-                    Node::Powi(x, n) => Node::Powi(m(x), n),
-                    Node::Powf(x, p) => Node::Powf(m(x), p),
-                    Node::Pow(x, y) => Node::Pow(m(x), m(y)),
-                    Node::Apply(f, x) => Node::Apply(f, m(x)),
-                    Node::Atan2(x, y) => Node::Atan2(m(x), m(y)),
-                    Node::Opaque(w, x, v) => Node::Opaque(w, m(x), v),
-                    leaf => leaf,
+                k += 1;
+            }
+            reach.sort_unstable();
+            let mut done: HashMap<u32, Sum> = HashMap::with_capacity(reach.len());
+            for id in reach {
+                let s = |k: u32| &done[&k];
+                let sum = match a.nodes[id as usize] {
+                    Node::Num(c) => Sum::num(c),
+                    Node::Var(i) => Sum::atom(Atom::Var(i)),
+                    Node::Add(x, y) => Sum::add(s(x), s(y)),
+                    Node::Mul(x, y) => Sum::mul(s(x), s(y)),
+                    Node::Div(x, y) => Sum::mul(s(x), &Sum::powi(s(y), -1)),
+                    Node::Neg(x) => Sum::neg(s(x)),
+                    Node::Powi(x, n) => Sum::powi(s(x), n),
+                    Node::Powf(x, p) => Sum::powf(s(x), p),
+                    Node::Pow(x, y) => Sum::pow(s(x), s(y)),
+                    Node::Apply(f, x) => Sum::apply(f, s(x)),
+                    Node::Atan2(x, y) => Sum::atan2(s(x), s(y)),
+                    Node::Opaque(w, x, v) => Sum::atom(Atom::Opaque(w, s(x).clone(), v)),
+                    Node::TooLarge => {
+                        return Err(too_large("expression nodes of a trace", usize::MAX));
+                    }
                 };
-                map.insert(id, nodes.len() as u32);
-                nodes.push(copied);
+                check(&sum)?;
+                done.insert(id, sum);
             }
-            Formula {
-                nodes,
-                names: names.to_vec(),
-            }
+            Ok(done.remove(&e.id).unwrap_or_default())
+        })?;
+        Ok(Formula {
+            root,
+            names: names.to_vec(),
         })
     }
 
-    /// The number of distinct nodes.
+    /// The number of nodes written out as a tree.
     pub fn len(&self) -> usize {
-        self.nodes.len()
+        self.root.size()
     }
 
     /// Whether the formula is empty (never: a formula has at least its root).
     pub fn is_empty(&self) -> bool {
-        self.nodes.is_empty()
+        false
     }
 
-    /// The formula's value with the variables set to `values` (in the order of the trace's
-    /// names; a missing one is NaN). Opaque nodes give their traced value.
+    /// The names of the variables, in the order [`Formula::eval`] takes their values.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The constant this formula is, if it is one.
+    pub fn as_constant(&self) -> Option<f64> {
+        self.root.as_constant()
+    }
+
+    /// The formula's value with the variables set to `values` (in the order of
+    /// [`Formula::names`]; a missing one is NaN). Opaque nodes give their traced value.
     pub fn eval(&self, values: &[f64]) -> f64 {
-        let mut v: Vec<f64> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
-            let x = match *node {
-                Node::Num(c) => c,
-                Node::Var(i) => values.get(i as usize).copied().unwrap_or(f64::NAN),
-                Node::Add(a, b) => v[a as usize] + v[b as usize],
-                Node::Mul(a, b) => v[a as usize] * v[b as usize],
-                Node::Div(a, b) => v[a as usize] / v[b as usize],
-                Node::Neg(a) => -v[a as usize],
-                Node::Powi(a, n) => v[a as usize].powi(n),
-                Node::Powf(a, p) => v[a as usize].powf(p),
-                Node::Pow(a, b) => v[a as usize].powf(v[b as usize]),
-                Node::Apply(f, a) => f.apply(v[a as usize]),
-                Node::Atan2(a, b) => v[a as usize].atan2(v[b as usize]),
-                Node::Opaque(_, _, value) => value,
-                Node::TooLarge => f64::NAN,
-            };
-            v.push(x);
-        }
-        v.last().copied().unwrap_or(f64::NAN)
+        self.root.eval(values)
     }
 
-    /// Plain text: `-sin(s)*(cos(t) + 2)`, `x^2`, `1/4` (ASCII, readable back by a parser).
+    /// The formula with every product of sums multiplied out (a polynomial in power form),
+    /// inside functions and denominators too.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] if the result would exceed [`MAX_FORMULA_SIZE`].
+    pub fn expanded(&self) -> Result<Formula> {
+        let root = self
+            .root
+            .expanded()
+            .ok_or_else(|| too_large("nodes of an expanded formula", self.len()))?;
+        check(&root)?;
+        Ok(Formula {
+            root,
+            names: self.names.clone(),
+        })
+    }
+
+    /// [`Formula::expanded`] if the formula is rational in its variables (no function of
+    /// them: the polynomial or rational piece of a spline, which reads best in powers), else
+    /// the formula as it is (the torus's `(2 + cos(t))*cos(s)`); also as it is where
+    /// multiplying out would exceed [`MAX_FORMULA_SIZE`].
+    pub fn tidy(&self) -> Formula {
+        if !self.root.is_rational() {
+            return self.clone();
+        }
+        self.expanded().unwrap_or_else(|_| self.clone())
+    }
+
+    /// Plain text: `-sin(s)*(2 + cos(t))`, `3*t*(1 - t)^2`, `t/4` (ASCII, readable back by
+    /// a parser with the usual precedence).
     pub fn plain(&self) -> String {
-        match self.nodes.len() {
-            0 => String::new(),
-            n => self.text(n as u32 - 1).0,
+        Printer {
+            style: Style::Plain,
+            names: &self.names,
         }
+        .sum(&self.root)
     }
 
-    /// The text of node `i` and its precedence (1 sum, 2 product, 3 unary minus, 4 power,
-    /// 5 atom).
-    fn text(&self, i: u32) -> (String, u8) {
-        let wrap = |(s, p): (String, u8), min: u8| {
-            if p < min {
-                format!("({s})")
-            } else {
-                s
-            }
-        };
-        match self.nodes[i as usize] {
-            Node::Num(c) => {
-                let s = number(c);
-                let p = if s.starts_with('-') || s.contains('/') {
-                    2
-                } else {
-                    5
-                };
-                (s, p)
-            }
-            Node::Var(k) => (
-                self.names
-                    .get(k as usize)
-                    .cloned()
-                    .unwrap_or_else(|| format!("x{k}")),
-                5,
-            ),
-            Node::Add(a, b) => {
-                let left = self.text(a).0;
-                match self.nodes[b as usize] {
-                    Node::Neg(c) => (format!("{left} - {}", wrap(self.text(c), 2)), 1),
-                    Node::Num(c) if c < 0.0 => (format!("{left} - {}", number(-c)), 1),
-                    _ => (format!("{left} + {}", self.text(b).0), 1),
-                }
-            }
-            Node::Mul(a, b) => (
-                format!("{}*{}", wrap(self.text(a), 2), wrap(self.text(b), 3)),
-                2,
-            ),
-            Node::Div(a, b) => (
-                format!("{}/{}", wrap(self.text(a), 2), wrap(self.text(b), 4)),
-                2,
-            ),
-            Node::Neg(a) => (format!("-{}", wrap(self.text(a), 2)), 3),
-            Node::Powi(a, n) => {
-                let e = if n < 0 {
-                    format!("({n})")
-                } else {
-                    n.to_string()
-                };
-                (format!("{}^{e}", wrap(self.text(a), 5)), 4)
-            }
-            Node::Powf(a, x) => (format!("{}^({})", wrap(self.text(a), 5), number(x)), 4),
-            Node::Pow(a, b) => (
-                format!("{}^{}", wrap(self.text(a), 5), wrap(self.text(b), 5)),
-                4,
-            ),
-            Node::Apply(f, a) => (format!("{}({})", f.name(), self.text(a).0), 5),
-            Node::Atan2(a, b) => (format!("atan2({}, {})", self.text(a).0, self.text(b).0), 5),
-            Node::Opaque(what, a, _) => (format!("{what}[{}]", self.text(a).0), 5),
-            Node::TooLarge => ("<expression too large>".into(), 5),
+    /// LaTeX (for a math environment): `-\sin(s) \left(2 + \cos(t)\right)`, `\frac{t}{4}`.
+    pub fn latex(&self) -> String {
+        Printer {
+            style: Style::Latex,
+            names: &self.names,
         }
+        .sum(&self.root)
+    }
+
+    /// Presentation MathML (the contents of a `<math>` element), which browsers render
+    /// without a script: the form a notebook's HTML copy shows.
+    pub fn mathml(&self) -> String {
+        Printer {
+            style: Style::MathMl,
+            names: &self.names,
+        }
+        .sum(&self.root)
     }
 }
 
-fn children(node: &Node) -> [Option<u32>; 2] {
+impl std::fmt::Display for Formula {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.plain())
+    }
+}
+
+fn too_large(what: &'static str, got: usize) -> Error {
+    Error::TooLarge {
+        what,
+        got,
+        max: MAX_FORMULA_SIZE,
+    }
+}
+
+fn check(s: &Sum) -> Result<()> {
+    if s.size() > MAX_FORMULA_SIZE {
+        return Err(too_large("nodes of a formula written out", s.size()));
+    }
+    if s.depth() > MAX_FORMULA_DEPTH {
+        return Err(Error::TooLarge {
+            what: "nesting depth of a formula",
+            got: s.depth(),
+            max: MAX_FORMULA_DEPTH,
+        });
+    }
+    Ok(())
+}
+
+pub(crate) fn children(node: &Node) -> [Option<u32>; 2] {
     match *node {
         Node::Add(a, b)
         | Node::Mul(a, b)
@@ -193,26 +206,527 @@ fn children(node: &Node) -> [Option<u32>; 2] {
     }
 }
 
+/// The largest denominator [`number`] prints a fraction with.
+const MAX_DENOMINATOR: u32 = 64;
+
+/// The fraction `(p, q)`, `q ≥ 1`, that `c` is exactly, if `q ≤ 64` and `|p| < 10¹⁵`.
+fn fraction(c: f64) -> Option<(i64, u32)> {
+    if !c.is_finite() {
+        return None;
+    }
+    (1..=MAX_DENOMINATOR).find_map(|q| {
+        let p = c * f64::from(q);
+        (p.fract() == 0.0 && p.abs() < 1e15 && p / f64::from(q) == c).then_some((p as i64, q))
+    })
+}
+
 /// A constant as printed: an integer, a fraction `p/q` with `q ≤ 64` when it is exactly one,
 /// else the shortest decimal that reads back to the same `f64`.
 pub fn number(c: f64) -> String {
-    if c.is_finite() && c.fract() == 0.0 && c.abs() < 1e15 {
-        return format!("{}", c as i64);
+    match fraction(c) {
+        Some((p, 1)) => p.to_string(),
+        Some((p, q)) => format!("{p}/{q}"),
+        None => format!("{c}"),
     }
-    if c.is_finite() {
-        for q in 2..=64u32 {
-            let p = c * q as f64;
-            if p.fract() == 0.0 && p.abs() < 1e15 && p / q as f64 == c {
-                return format!("{}/{q}", p as i64);
+}
+
+/// The plain text of a live expression (variables named as the running trace named them).
+pub(crate) fn plain(e: &Expr) -> String {
+    match Formula::capture(e, &super::current_names()) {
+        Ok(f) => f.plain(),
+        Err(err) => format!("<{err}>"),
+    }
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Style {
+    Plain,
+    Latex,
+    MathMl,
+}
+
+/// One printer for every style: the structure (order, brackets, fractions, common factors)
+/// is decided once, only the tokens differ.
+struct Printer<'a> {
+    style: Style,
+    names: &'a [String],
+}
+
+impl Printer<'_> {
+    fn paren(&self, s: &str) -> String {
+        match self.style {
+            Style::Plain => format!("({s})"),
+            Style::Latex => format!("\\left({s}\\right)"),
+            Style::MathMl => format!("<mrow><mo>(</mo>{s}<mo>)</mo></mrow>"),
+        }
+    }
+
+    /// An operator between or before operands (`+`, `-`).
+    fn op(&self, o: char) -> String {
+        match self.style {
+            Style::MathMl => format!("<mo>{}</mo>", if o == '-' { '\u{2212}' } else { o }),
+            _ => o.to_string(),
+        }
+    }
+
+    fn frac(&self, top: &str, bottom: &str, bottom_parts: usize) -> String {
+        match self.style {
+            Style::Plain if bottom_parts == 1 => format!("{top}/{bottom}"),
+            Style::Plain => format!("{top}/({bottom})"),
+            Style::Latex => format!("\\frac{{{top}}}{{{bottom}}}"),
+            Style::MathMl => format!("<mfrac><mrow>{top}</mrow><mrow>{bottom}</mrow></mfrac>"),
+        }
+    }
+
+    fn sup(&self, base: &str, exp: &str) -> String {
+        match self.style {
+            Style::Plain => format!("{base}^{exp}"),
+            Style::Latex => format!("{base}^{{{exp}}}"),
+            Style::MathMl => format!("<msup><mrow>{base}</mrow><mrow>{exp}</mrow></msup>"),
+        }
+    }
+
+    fn sqrt(&self, x: &str) -> String {
+        match self.style {
+            Style::Plain => format!("sqrt({x})"),
+            Style::Latex => format!("\\sqrt{{{x}}}"),
+            Style::MathMl => format!("<msqrt>{x}</msqrt>"),
+        }
+    }
+
+    fn num(&self, c: f64) -> String {
+        match (self.style, fraction(c)) {
+            (Style::Plain, _) => number(c),
+            (_, Some((p, 1))) => self.digits(&p.unsigned_abs().to_string(), p < 0),
+            (_, Some((p, q))) => {
+                let f = self.frac(
+                    &self.digits(&p.unsigned_abs().to_string(), false),
+                    &self.digits(&q.to_string(), false),
+                    1,
+                );
+                if p < 0 {
+                    format!("{}{f}", self.op('-'))
+                } else {
+                    f
+                }
+            }
+            (Style::Latex, None) if c.is_nan() => "\\mathrm{NaN}".into(),
+            (Style::Latex, None) if c.is_infinite() => {
+                if c > 0.0 { "\\infty" } else { "-\\infty" }.into()
+            }
+            (Style::MathMl, None) if !c.is_finite() => {
+                format!("<mi>{}</mi>", number(c).replace("inf", "\u{221e}"))
+            }
+            (_, None) => {
+                let text = format!("{}", c.abs());
+                let body = match text.split_once('e') {
+                    Some((m, e)) => {
+                        let (m, e) = (self.digits(m, false), self.digits(e, false));
+                        let ten = self.digits("10", false);
+                        match self.style {
+                            Style::Latex => format!("{m} \\cdot {}", self.sup(&ten, &e)),
+                            _ => format!("{m}<mo>\u{22c5}</mo>{}", self.sup(&ten, &e)),
+                        }
+                    }
+                    None => self.digits(&text, false),
+                };
+                if c < 0.0 {
+                    format!("{}{body}", self.op('-'))
+                } else {
+                    body
+                }
             }
         }
     }
-    format!("{c}")
+
+    fn digits(&self, d: &str, negative: bool) -> String {
+        let sign = if negative {
+            self.op('-')
+        } else {
+            String::new()
+        };
+        match self.style {
+            Style::MathMl => format!("{sign}<mn>{d}</mn>"),
+            _ => format!("{sign}{d}"),
+        }
+    }
+
+    fn var(&self, i: u32) -> String {
+        let name = self
+            .names
+            .get(i as usize)
+            .cloned()
+            .unwrap_or_else(|| format!("x{i}"));
+        let stem_len = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+        let (head, digits) = name.split_at(stem_len);
+        let subscript = !digits.is_empty() && head.chars().count() == 1;
+        match self.style {
+            Style::Plain => name,
+            Style::Latex if subscript => format!("{head}_{{{digits}}}"),
+            Style::Latex if name.chars().count() > 1 => format!("\\mathit{{{name}}}"),
+            Style::Latex => name,
+            Style::MathMl if subscript => {
+                format!("<msub><mi>{head}</mi><mn>{digits}</mn></msub>")
+            }
+            Style::MathMl => format!("<mi>{}</mi>", escape(&name)),
+        }
+    }
+
+    /// A sum: common factors and signs out, the first term positive where one is.
+    fn sum(&self, s: &Sum) -> String {
+        match s.terms.as_slice() {
+            [] => self.num(0.0),
+            [t] => self.term(t),
+            terms => {
+                if let Some(factored) = factor_out(terms) {
+                    return self.term(&factored);
+                }
+                // ascending powers of the variables, constants first, as the report prints
+                // its bases and Codice 3 its torus (`2 + cos(t)`); then a positive term
+                // first where there is one
+                let mut order: Vec<&Term> = terms.iter().collect();
+                order.sort_by_key(|t| (degree(t), !t.factors.is_empty()));
+                if order[0].coef < 0.0 {
+                    if let Some(k) = order.iter().position(|t| t.coef >= 0.0) {
+                        let first = order.remove(k);
+                        order.insert(0, first);
+                    }
+                }
+                let gap = if self.style == Style::MathMl { "" } else { " " };
+                let mut out = self.term(order[0]);
+                for t in &order[1..] {
+                    let (o, t) = if t.coef < 0.0 {
+                        ('-', negated(t))
+                    } else {
+                        ('+', (*t).clone())
+                    };
+                    out.push_str(&format!("{gap}{}{gap}{}", self.op(o), self.term(&t)));
+                }
+                out
+            }
+        }
+    }
+
+    /// A term: sign, numerator (coefficient first), denominator.
+    fn term(&self, t: &Term) -> String {
+        let sign = if t.coef < 0.0 || (t.coef == 0.0 && t.coef.is_sign_negative()) {
+            self.op('-')
+        } else {
+            String::new()
+        };
+        let c = t.coef.abs();
+        let (mut num, mut den): (Vec<String>, Vec<String>) = (Vec::new(), Vec::new());
+        match fraction(c) {
+            _ if t.factors.is_empty() => num.push(self.num(c)),
+            Some((1, 1)) => {}
+            Some((p, q)) => {
+                if p != 1 {
+                    num.push(self.num(p as f64));
+                }
+                if q > 1 {
+                    den.push(self.num(f64::from(q)));
+                }
+            }
+            None => num.push(self.num(c)),
+        }
+        for (a, e) in &t.factors {
+            if *e > 0.0 {
+                num.push(self.factor(a, *e));
+            } else {
+                den.push(self.factor(a, -e));
+            }
+        }
+        let body = match (num.is_empty(), den.is_empty()) {
+            (true, true) => self.num(1.0),
+            (_, true) => self.times(&num),
+            _ => {
+                let top = if num.is_empty() {
+                    self.num(1.0)
+                } else {
+                    self.times(&num)
+                };
+                self.frac(&top, &self.times(&den), den.len())
+            }
+        };
+        format!("{sign}{body}")
+    }
+
+    /// Factors side by side: `*` in plain text; juxtaposed in LaTeX and MathML, with a dot
+    /// before a factor that starts with a number.
+    fn times(&self, parts: &[String]) -> String {
+        let mut out = String::new();
+        for (k, p) in parts.iter().enumerate() {
+            if k > 0 {
+                out.push_str(match self.style {
+                    Style::Plain => "*",
+                    Style::Latex if p.starts_with(|c: char| c.is_ascii_digit()) => " \\cdot ",
+                    Style::Latex if p.starts_with("\\frac") => " \\cdot ",
+                    Style::Latex => " ",
+                    Style::MathMl if p.starts_with("<mn>") || p.starts_with("<mfrac>") => {
+                        "<mo>\u{22c5}</mo>"
+                    }
+                    Style::MathMl => "<mo>\u{2062}</mo>",
+                });
+            }
+            out.push_str(p);
+        }
+        out
+    }
+
+    /// `baseᵉ`, `e > 0`.
+    fn factor(&self, a: &Atom, e: f64) -> String {
+        if e == 0.5 {
+            let inner = match a {
+                Atom::Group(s) => self.sum(s),
+                other => self.atom(other),
+            };
+            return self.sqrt(&inner);
+        }
+        let base = match a {
+            Atom::Group(s) if !is_atomic(s) => self.paren(&self.sum(s)),
+            Atom::Group(s) => self.sum(s),
+            Atom::Pow(..) if e != 1.0 => self.paren(&self.atom(a)),
+            other => self.atom(other),
+        };
+        if e == 1.0 {
+            return base;
+        }
+        let exp = self.num(e);
+        match (self.style, a) {
+            // sin²(t), as mathematics writes it
+            (Style::Latex | Style::MathMl, Atom::Func(f, arg)) if e.fract() == 0.0 => {
+                match self.func_name(*f) {
+                    Some(name) => format!("{}{}", self.sup(&name, &exp), self.arg(arg)),
+                    None => self.sup(&base, &exp),
+                }
+            }
+            (Style::Plain, _) if e.fract() != 0.0 => format!("{base}^({exp})"),
+            _ => self.sup(&base, &exp),
+        }
+    }
+
+    fn atom(&self, a: &Atom) -> String {
+        match a {
+            Atom::Var(i) => self.var(*i),
+            Atom::Group(s) => self.paren(&self.sum(s)),
+            Atom::Func(f, x) => self.func(*f, x),
+            Atom::Pow(x, y) => {
+                let base = if is_atomic(x) {
+                    self.sum(x)
+                } else {
+                    self.paren(&self.sum(x))
+                };
+                let exp = match self.style {
+                    Style::Plain if !is_atomic(y) => self.paren(&self.sum(y)),
+                    _ => self.sum(y),
+                };
+                self.sup(&base, &exp)
+            }
+            Atom::Atan2(x, y) => {
+                let args = match self.style {
+                    Style::MathMl => format!("{}<mo>,</mo>{}", self.sum(x), self.sum(y)),
+                    _ => format!("{}, {}", self.sum(x), self.sum(y)),
+                };
+                format!("{}{}", self.named("atan2"), self.paren(&args))
+            }
+            Atom::Opaque(what, x, _) => {
+                let x = self.sum(x);
+                match self.style {
+                    Style::Plain => format!("{what}[{x}]"),
+                    Style::Latex => format!("\\operatorname{{{what}}}\\left[{x}\\right]"),
+                    Style::MathMl => format!("<mi>{what}</mi><mo>[</mo>{x}<mo>]</mo>"),
+                }
+            }
+        }
+    }
+
+    /// A name set upright (`atan2`, `arsinh`).
+    fn named(&self, name: &str) -> String {
+        match self.style {
+            Style::Plain => name.into(),
+            Style::Latex => format!("\\operatorname{{{name}}}"),
+            Style::MathMl => format!("<mi mathvariant=\"normal\">{name}</mi><mo>\u{2061}</mo>"),
+        }
+    }
+
+    /// The function's name as set in the style (`None` for those set as notation: `√`, `|x|`).
+    fn func_name(&self, f: Func) -> Option<String> {
+        match (self.style, f) {
+            (_, Func::Sqrt | Func::Cbrt | Func::Abs) => None,
+            (Style::Plain, _) => Some(f.name().into()),
+            (Style::Latex, _) => {
+                Some(latex_func(f).map_or_else(|| self.named(f.name()), String::from))
+            }
+            (Style::MathMl, Func::SphJ0 | Func::SphJ1 | Func::SphJ2) => Some(format!(
+                "<msub><mi>j</mi><mn>{}</mn></msub>",
+                &f.name()[1..]
+            )),
+            (Style::MathMl, _) => Some(format!("<mi>{}</mi>", f.name())),
+        }
+    }
+
+    /// A function's argument in brackets.
+    fn arg(&self, x: &Sum) -> String {
+        match self.style {
+            Style::Latex if is_atomic(x) => format!("({})", self.sum(x)),
+            _ => self.paren(&self.sum(x)),
+        }
+    }
+
+    fn func(&self, f: Func, x: &Sum) -> String {
+        let inner = self.sum(x);
+        match (self.style, f) {
+            (Style::Plain, _) => format!("{}({inner})", f.name()),
+            (_, Func::Sqrt) => self.sqrt(&inner),
+            (Style::Latex, Func::Abs) => format!("\\left|{inner}\\right|"),
+            (Style::Latex, Func::Cbrt) => format!("\\sqrt[3]{{{inner}}}"),
+            (Style::MathMl, Func::Abs) => format!("<mrow><mo>|</mo>{inner}<mo>|</mo></mrow>"),
+            (Style::MathMl, Func::Cbrt) => format!("<mroot><mrow>{inner}</mrow><mn>3</mn></mroot>"),
+            (Style::MathMl, _) => format!(
+                "{}<mo>\u{2061}</mo>{}",
+                self.func_name(f).unwrap_or_default(),
+                self.arg(x)
+            ),
+            (Style::Latex, _) => {
+                format!("{}{}", self.func_name(f).unwrap_or_default(), self.arg(x))
+            }
+        }
+    }
 }
 
-/// The plain text of a live expression (with variables named `x0`, `x1`, … unless a trace
-/// named them).
-pub(crate) fn plain(e: &Expr) -> String {
-    let names = super::current_names();
-    Formula::capture(e, &names).plain()
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// The LaTeX command of a function that has one (`\sin`, `\arctan`, `j_0`).
+fn latex_func(f: Func) -> Option<&'static str> {
+    Some(match f {
+        Func::Sin => "\\sin",
+        Func::Cos => "\\cos",
+        Func::Tan => "\\tan",
+        Func::Exp => "\\exp",
+        Func::Ln => "\\ln",
+        Func::Asin => "\\arcsin",
+        Func::Acos => "\\arccos",
+        Func::Atan => "\\arctan",
+        Func::Sinh => "\\sinh",
+        Func::Cosh => "\\cosh",
+        Func::Tanh => "\\tanh",
+        Func::Asinh => "\\operatorname{arsinh}",
+        Func::Acosh => "\\operatorname{arcosh}",
+        Func::Atanh => "\\operatorname{artanh}",
+        Func::SphJ0 => "j_0",
+        Func::SphJ1 => "j_1",
+        Func::SphJ2 => "j_2",
+        Func::Sqrt | Func::Cbrt | Func::Abs => return None,
+    })
+}
+
+/// Whether a sum prints as one atom (a variable, a function, a positive integer): no
+/// brackets needed under a power.
+fn is_atomic(s: &Sum) -> bool {
+    match s.terms.as_slice() {
+        [] => true,
+        [t] if t.factors.is_empty() => t.coef >= 0.0 && t.coef.fract() == 0.0,
+        [t] => {
+            t.coef == 1.0
+                && t.factors.len() == 1
+                && t.factors[0].1 == 1.0
+                && !matches!(*t.factors[0].0, Atom::Pow(..) | Atom::Group(_))
+        }
+        _ => false,
+    }
+}
+
+/// The total power of the variables in a term (a polynomial's degree; other factors count
+/// nothing).
+fn degree(t: &Term) -> u64 {
+    t.factors
+        .iter()
+        .filter(|(a, e)| a.is_var() && *e > 0.0 && e.fract() == 0.0)
+        .map(|(_, e)| *e as u64)
+        .sum()
+}
+
+fn negated(t: &Term) -> Term {
+    Term {
+        coef: -t.coef,
+        factors: t.factors.clone(),
+    }
+}
+
+/// `Σ tᵢ` as `±c·(Σ tᵢ/c)` when every term shares a factor that is not a plain variable
+/// (`−sin s·cos t − 2 sin s = −sin s·(cos t + 2)`) or every term is negative; `None` if
+/// nothing is common. Powers of variables stay in place, so a polynomial prints expanded in
+/// powers, as the report prints its bases.
+fn factor_out(terms: &[Term]) -> Option<Term> {
+    let sign = if terms.iter().all(|t| t.coef < 0.0) {
+        -1.0
+    } else {
+        1.0
+    };
+    let mut common: Vec<(Rc<Atom>, f64)> = Vec::new();
+    for (a, e) in &terms[0].factors {
+        if a.is_var() {
+            continue;
+        }
+        let mut exp = *e;
+        let everywhere = terms[1..].iter().all(|t| {
+            t.factors.iter().any(|(b, f)| {
+                let found = (Rc::ptr_eq(a, b) || a == b) && f.signum() == e.signum();
+                if found && f.abs() < exp.abs() {
+                    exp = *f;
+                }
+                found
+            })
+        });
+        if everywhere {
+            common.push((a.clone(), exp));
+        }
+    }
+    if common.is_empty() && sign > 0.0 {
+        return None;
+    }
+    let rest: Vec<Term> = terms
+        .iter()
+        .map(|t| {
+            let mut factors = t.factors.clone();
+            for (a, e) in &common {
+                if let Some(k) = factors.iter().position(|(b, _)| Rc::ptr_eq(a, b) || a == b) {
+                    let left = factors[k].1 - e;
+                    if left == 0.0 {
+                        factors.remove(k);
+                    } else {
+                        factors[k].1 = left;
+                    }
+                }
+            }
+            Term {
+                coef: t.coef * sign,
+                factors,
+            }
+        })
+        .collect();
+    // the rest collected again: a term that was a group alone is flattened into it
+    let inner = rest
+        .into_iter()
+        .fold(Sum::num(0.0), |acc, t| Sum::add(&acc, &Sum::from_term(t)));
+    let outside = Term {
+        coef: sign,
+        factors: common,
+    };
+    Some(match inner.terms.as_slice() {
+        [] => Term::constant(0.0),
+        [t] => outside.times(t),
+        _ => {
+            let mut factors = outside.factors;
+            factors.push((Rc::new(Atom::Group(inner)), 1.0));
+            Term {
+                coef: sign,
+                factors,
+            }
+        }
+    })
 }

@@ -221,37 +221,61 @@ pub fn torus_partials() -> Result<Table> {
     let id = "torus-partials";
     let torus = Torus::default();
     let (big_r, r) = (torus.major(), torus.minor());
+    // the formulas, traced once through the same `eval` that gives the numbers
+    let formulas = crate::symbolic::surface_formulas(&torus, 0.3, 0.7)?;
     let points = [(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0), (0.3, 2.1)];
     let (mut s_col, mut t_col, mut what, mut coord) = (vec![], vec![], vec![], vec![]);
-    let (mut dual, mut closed, mut diff) = (vec![], vec![], vec![]);
+    let (mut formula, mut dual, mut closed, mut diff) = (vec![], vec![], vec![], vec![]);
+    let (mut formula_value, mut formula_diff) = (vec![], vec![]);
     for (s, t) in points {
         let d = torus.partials(s, t);
         let (ss, cs, st, ct) = (s.sin(), s.cos(), t.sin(), t.cos());
         let ring = big_r + r * ct;
         let closed_forms = [
-            ("X_s", d.ds, Vector3::new(-ring * ss, ring * cs, 0.0)),
+            (
+                "X",
+                d.point,
+                Vector3::new(ring * cs, ring * ss, r * st),
+                &formulas.point,
+            ),
+            (
+                "X_s",
+                d.ds,
+                Vector3::new(-ring * ss, ring * cs, 0.0),
+                &formulas.ds,
+            ),
             (
                 "X_t",
                 d.dt,
                 Vector3::new(-r * st * cs, -r * st * ss, r * ct),
+                &formulas.dt,
             ),
-            ("X_st", d.dst, Vector3::new(r * st * ss, -r * st * cs, 0.0)),
+            (
+                "X_st",
+                d.dst,
+                Vector3::new(r * st * ss, -r * st * cs, 0.0),
+                &formulas.dst,
+            ),
         ];
-        for (name, ours, exact) in closed_forms {
+        for (name, ours, exact, traced) in closed_forms {
             for (k, axis) in COORDS.iter().enumerate() {
                 s_col.push(s);
                 t_col.push(t);
                 what.push(name);
                 coord.push(*axis);
+                formula.push(traced[k].plain());
                 dual.push(ours[k]);
                 closed.push(exact[k]);
                 diff.push((ours[k] - exact[k]).abs());
+                let v = traced[k].eval(&[s, t]);
+                formula_value.push(v);
+                formula_diff.push((v - ours[k]).abs());
             }
         }
     }
     Ok(Table {
         id: id.into(),
-        title: "Exact partials of the torus: hyper-dual numbers vs the closed forms of Codice 3".into(),
+        title: "Exact partials of the torus: their formulas and hyper-dual values vs the closed forms of Codice 3".into(),
         df: frame(
             id,
             vec![
@@ -259,13 +283,17 @@ pub fn torus_partials() -> Result<Table> {
                 Column::new("t".into(), t_col),
                 Column::new("partial".into(), what),
                 Column::new("coord".into(), coord),
+                Column::new("formula".into(), formula),
                 Column::new("hyper_dual".into(), dual),
                 Column::new("closed_form".into(), closed),
                 Column::new("abs_difference".into(), diff),
+                Column::new("formula_value".into(), formula_value),
+                Column::new("formula_abs_difference".into(), formula_diff),
             ],
         )?,
         notes: vec![
             "hyper_dual: one evaluation of the torus formula at s + ε₁, t + ε₂ (num-dual HyperDual64); closed_form: the derivatives MATLAB's diff returns (Codice 3).".into(),
+            "formula: the same generic eval run once on hyper-dual numbers of symbolic expressions (splinelab::symbolic), simplified and printed; formula_value: that formula evaluated at (s, t), checked against hyper_dual.".into(),
             "X_st vanishes wherever sin t = 0, e.g. on the whole line t = 0 — the fact that hid the sign error of Codice 7 (see T6).".into(),
         ],
     })

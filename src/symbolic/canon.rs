@@ -1,0 +1,537 @@
+//! The normal form formulas are simplified into: a sum of terms, each a coefficient times a
+//! product of powers of atoms (variables, functions, grouped sums, …).
+//!
+//! Rules (each valid wherever both sides are defined):
+//! - like terms are collected (`a·b + 2·b·a = 3·a·b`: the factors compared as a multiset), and
+//!   a term whose coefficient is `0` dropped;
+//! - equal bases multiply by adding exponents (`x²·x⁻¹ = x`, `√x·√x = x`), a factor whose
+//!   exponent becomes `0` is dropped;
+//! - constants fold, and a constant multiplies into a sum (`2·(1 + t) = 2 + 2t`);
+//! - a sum that is a factor of a product is kept whole, its sign out if all its terms are
+//!   negative (`(−a − b)·c = −(a + b)·c`); `(x·y)ⁿ = xⁿ·yⁿ` and `(xᵃ)ⁿ = xᵃⁿ` for integer `n`,
+//!   `(c·x)ᵖ = cᵖ·xᵖ` for `c > 0` and any `p`; a power `p` of anything else stays whole
+//!   (`√(x²)` is not `x`).
+//!
+//! Order: terms and factors keep the order in which the traced code first produced them (the
+//! formula reads like the code that computed it), with a product's coefficient first.
+//!
+//! Products of sums are *not* multiplied out unless asked ([`Sum::expanded`]), so the
+//! Bernstein polynomial `3t(1 − t)²` stays as the report prints it.
+
+use super::expr::Func;
+use std::collections::HashMap;
+use std::rc::Rc;
+
+/// The most nodes a formula may have when written out as a tree (shared subexpressions
+/// counted each time they occur), the bound that keeps printing and evaluation finite.
+pub const MAX_FORMULA_SIZE: usize = 1 << 20;
+
+/// The most terms [`Sum::expanded`] produces (a typed error beyond: multiplying out is
+/// refused, not attempted).
+pub const MAX_EXPANDED_TERMS: usize = 1 << 14;
+
+/// The deepest nesting a formula may have (functions of functions of …): printing and
+/// evaluation recurse this deep at most.
+pub const MAX_FORMULA_DEPTH: usize = 256;
+
+/// A factor's base.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Atom {
+    /// A variable, by its index in the trace's names.
+    Var(u32),
+    /// `f(a)`.
+    Func(Func, Sum),
+    /// A sum (or, under a non-integer power, a product) kept whole.
+    Group(Sum),
+    /// `aᵇ` with an exponent that is not a constant.
+    Pow(Sum, Sum),
+    /// `atan2(a, b)`.
+    Atan2(Sum, Sum),
+    /// An operation without a formula (`%`), its argument and its value at the trace point.
+    Opaque(&'static str, Sum, f64),
+}
+
+/// `coef · Π baseᵉ`, the factors in their display order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Term {
+    /// The coefficient.
+    pub coef: f64,
+    /// Bases and their exponents (never `0`), no base twice.
+    pub factors: Vec<(Rc<Atom>, f64)>,
+}
+
+/// A sum of terms in display order (`0` is the empty sum), with its size and depth.
+#[derive(Debug, Clone, Default)]
+pub struct Sum {
+    /// The terms.
+    pub terms: Vec<Term>,
+    size: usize,
+    depth: usize,
+    /// A structural hash, independent of the terms' order (equal sums hash equal).
+    hash: u64,
+}
+
+impl PartialEq for Sum {
+    fn eq(&self, other: &Sum) -> bool {
+        self.hash == other.hash && self.terms == other.terms
+    }
+}
+
+/// A 64-bit mix (SplitMix64's finaliser): structural hashes of atoms, terms and sums.
+fn mix(mut x: u64) -> u64 {
+    x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    x ^ (x >> 31)
+}
+
+fn mix2(a: u64, b: u64) -> u64 {
+    mix(a.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b)
+}
+
+impl Atom {
+    /// A structural hash (equal atoms hash equal).
+    fn hash(&self) -> u64 {
+        match self {
+            Atom::Var(i) => mix2(1, u64::from(*i)),
+            Atom::Func(f, a) => mix2(mix2(2, *f as u64), a.hash),
+            Atom::Group(a) => mix2(3, a.hash),
+            Atom::Pow(a, b) => mix2(mix2(4, a.hash), b.hash),
+            Atom::Atan2(a, b) => mix2(mix2(5, a.hash), b.hash),
+            Atom::Opaque(w, a, v) => mix2(mix2(mix2(6, w.len() as u64), a.hash), v.to_bits()),
+        }
+    }
+
+    fn size(&self) -> usize {
+        match self {
+            Atom::Var(_) => 1,
+            Atom::Func(_, a) | Atom::Group(a) | Atom::Opaque(_, a, _) => a.size.saturating_add(1),
+            Atom::Pow(a, b) | Atom::Atan2(a, b) => a.size.saturating_add(b.size).saturating_add(1),
+        }
+    }
+
+    fn depth(&self) -> usize {
+        match self {
+            Atom::Var(_) => 1,
+            Atom::Func(_, a) | Atom::Group(a) | Atom::Opaque(_, a, _) => a.depth + 1,
+            Atom::Pow(a, b) | Atom::Atan2(a, b) => a.depth.max(b.depth) + 1,
+        }
+    }
+
+    /// The atom's value with the variables set to `values`.
+    pub fn eval(&self, values: &[f64]) -> f64 {
+        match self {
+            Atom::Var(i) => values.get(*i as usize).copied().unwrap_or(f64::NAN),
+            Atom::Func(f, a) => f.apply(a.eval(values)),
+            Atom::Group(a) => a.eval(values),
+            Atom::Pow(a, b) => a.eval(values).powf(b.eval(values)),
+            Atom::Atan2(a, b) => a.eval(values).atan2(b.eval(values)),
+            Atom::Opaque(_, _, v) => *v,
+        }
+    }
+
+    /// Whether this is a variable.
+    pub fn is_var(&self) -> bool {
+        matches!(self, Atom::Var(_))
+    }
+}
+
+/// `x^e` as evaluated (square roots exactly as `sqrt`).
+pub(crate) fn power(x: f64, e: f64) -> f64 {
+    if e == 1.0 {
+        x
+    } else if e == 0.5 {
+        x.sqrt()
+    } else if e == -0.5 {
+        1.0 / x.sqrt()
+    } else if e.fract() == 0.0 && e.abs() <= i32::MAX as f64 {
+        x.powi(e as i32)
+    } else {
+        x.powf(e)
+    }
+}
+
+impl Term {
+    pub(crate) fn constant(c: f64) -> Term {
+        Term {
+            coef: c,
+            factors: Vec::new(),
+        }
+    }
+
+    /// A hash of the factors alone, independent of their order: like terms hash equal.
+    fn monomial_hash(&self) -> u64 {
+        self.factors.iter().fold(0u64, |h, (a, e)| {
+            h.wrapping_add(mix2(a.hash(), e.to_bits()))
+        })
+    }
+
+    fn size(&self) -> usize {
+        self.factors
+            .iter()
+            .fold(1usize, |n, (a, _)| n.saturating_add(a.size()))
+    }
+
+    fn depth(&self) -> usize {
+        self.factors
+            .iter()
+            .map(|(a, _)| a.depth())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// Whether the two terms have the same factors (in any order).
+    pub fn like(&self, other: &Term) -> bool {
+        self.factors.len() == other.factors.len()
+            && self
+                .factors
+                .iter()
+                .all(|(a, e)| other.factors.iter().any(|(b, f)| e == f && same_atom(a, b)))
+    }
+
+    fn eval(&self, values: &[f64]) -> f64 {
+        self.factors
+            .iter()
+            .fold(self.coef, |p, (a, e)| p * power(a.eval(values), *e))
+    }
+
+    /// `self · other`, equal bases merged.
+    pub(crate) fn times(&self, other: &Term) -> Term {
+        let mut factors = self.factors.clone();
+        for (b, f) in &other.factors {
+            match factors.iter().position(|(a, _)| same_atom(a, b)) {
+                Some(k) => {
+                    let e = factors[k].1 + f;
+                    if e == 0.0 {
+                        factors.remove(k);
+                    } else {
+                        factors[k].1 = e;
+                    }
+                }
+                None => factors.push((b.clone(), *f)),
+            }
+        }
+        Term {
+            coef: self.coef * other.coef,
+            factors,
+        }
+    }
+}
+
+fn same_atom(a: &Rc<Atom>, b: &Rc<Atom>) -> bool {
+    Rc::ptr_eq(a, b) || a == b
+}
+
+impl Sum {
+    pub(crate) fn from_terms(terms: Vec<Term>) -> Sum {
+        let size = terms.iter().fold(1usize, |n, t| n.saturating_add(t.size()));
+        let depth = terms.iter().map(Term::depth).max().unwrap_or(0);
+        let hash = terms.iter().fold(7u64, |h, t| {
+            h.wrapping_add(mix2(t.monomial_hash(), t.coef.to_bits()))
+        });
+        Sum {
+            terms,
+            size,
+            depth,
+            hash,
+        }
+    }
+
+    /// The constant `c`.
+    pub fn num(c: f64) -> Sum {
+        if c == 0.0 {
+            Sum::from_terms(Vec::new())
+        } else {
+            Sum::from_terms(vec![Term::constant(c)])
+        }
+    }
+
+    /// The atom alone.
+    pub fn atom(a: Atom) -> Sum {
+        Sum::from_terms(vec![Term {
+            coef: 1.0,
+            factors: vec![(Rc::new(a), 1.0)],
+        }])
+    }
+
+    /// A term as a sum: a term that is only `c·(a + b)` becomes `c·a + c·b`.
+    pub(crate) fn from_term(t: Term) -> Sum {
+        if t.coef == 0.0 {
+            return Sum::num(0.0);
+        }
+        if let [(a, e)] = t.factors.as_slice() {
+            if let (Atom::Group(inner), 1.0) = (a.as_ref(), *e) {
+                return inner.scale(t.coef);
+            }
+        }
+        Sum::from_terms(vec![t])
+    }
+
+    /// Whether the sum is a rational function of its variables: only variables and groups
+    /// of such sums as factors, integer exponents.
+    pub fn is_rational(&self) -> bool {
+        self.terms.iter().all(|t| {
+            t.factors.iter().all(|(a, e)| {
+                e.fract() == 0.0
+                    && match a.as_ref() {
+                        Atom::Var(_) => true,
+                        Atom::Group(s) => s.is_rational(),
+                        _ => false,
+                    }
+            })
+        })
+    }
+
+    /// The number of nodes written out as a tree.
+    pub fn size(&self) -> usize {
+        self.size
+    }
+
+    /// The nesting depth.
+    pub fn depth(&self) -> usize {
+        self.depth
+    }
+
+    /// The constant this sum is, if it is one.
+    pub fn as_constant(&self) -> Option<f64> {
+        match self.terms.as_slice() {
+            [] => Some(0.0),
+            [t] if t.factors.is_empty() => Some(t.coef),
+            _ => None,
+        }
+    }
+
+    /// The value with the variables set to `values` (in the trace's order; a missing one is
+    /// NaN).
+    pub fn eval(&self, values: &[f64]) -> f64 {
+        self.terms.iter().map(|t| t.eval(values)).sum()
+    }
+
+    fn scale(&self, c: f64) -> Sum {
+        if c == 1.0 {
+            return self.clone();
+        }
+        Sum::from_terms(
+            self.terms
+                .iter()
+                .map(|t| Term {
+                    coef: t.coef * c,
+                    factors: t.factors.clone(),
+                })
+                .filter(|t| t.coef != 0.0)
+                .collect(),
+        )
+    }
+
+    /// `a + b`, like terms collected.
+    pub fn add(a: &Sum, b: &Sum) -> Sum {
+        if b.terms.is_empty() {
+            return a.clone();
+        }
+        if a.terms.is_empty() {
+            return b.clone();
+        }
+        Sum::collect(a.terms.iter().chain(&b.terms).cloned())
+    }
+
+    /// The sum of `terms`, like terms collected (found through their monomial hash, then
+    /// compared, so collecting is linear in the number of terms), zero terms dropped; the
+    /// first occurrence of each keeps its place.
+    fn collect(terms: impl Iterator<Item = Term>) -> Sum {
+        let mut out: Vec<Term> = Vec::new();
+        let mut index: HashMap<u64, Vec<usize>> = HashMap::new();
+        for t in terms {
+            let slot = index.entry(t.monomial_hash()).or_default();
+            match slot.iter().copied().find(|&k| out[k].like(&t)) {
+                Some(k) => out[k].coef += t.coef,
+                None => {
+                    slot.push(out.len());
+                    out.push(t);
+                }
+            }
+        }
+        out.retain(|t| t.coef != 0.0);
+        Sum::from_terms(out)
+    }
+
+    /// `−a`.
+    pub fn neg(a: &Sum) -> Sum {
+        a.scale(-1.0)
+    }
+
+    /// This sum as one term: itself if it has one term, else a group (its sign out when every
+    /// term is negative).
+    fn as_term(&self) -> Term {
+        match self.terms.as_slice() {
+            [] => Term::constant(0.0),
+            [t] => t.clone(),
+            terms => {
+                let sign = if terms.iter().all(|t| t.coef < 0.0) {
+                    -1.0
+                } else {
+                    1.0
+                };
+                Term {
+                    coef: sign,
+                    factors: vec![(Rc::new(Atom::Group(self.scale(sign))), 1.0)],
+                }
+            }
+        }
+    }
+
+    /// `a · b`: constants multiply into sums, other sums are kept whole.
+    pub fn mul(a: &Sum, b: &Sum) -> Sum {
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), _) => b.scale(x),
+            (_, Some(y)) => a.scale(y),
+            _ => Sum::from_term(a.as_term().times(&b.as_term())),
+        }
+    }
+
+    /// `aⁿ`.
+    pub fn powi(a: &Sum, n: i32) -> Sum {
+        match n {
+            0 => return Sum::num(1.0),
+            1 => return a.clone(),
+            _ => {}
+        }
+        if let Some(c) = a.as_constant() {
+            return Sum::num(c.powi(n));
+        }
+        let t = a.as_term();
+        let e = f64::from(n);
+        Sum::from_term(Term {
+            coef: t.coef.powi(n),
+            factors: t.factors.iter().map(|(b, f)| (b.clone(), f * e)).collect(),
+        })
+    }
+
+    /// `aᵖ` for a real `p`.
+    pub fn powf(a: &Sum, p: f64) -> Sum {
+        if p.fract() == 0.0 && p.abs() <= i32::MAX as f64 {
+            return Sum::powi(a, p as i32);
+        }
+        if let Some(c) = a.as_constant() {
+            return Sum::num(c.powf(p));
+        }
+        if let [t] = a.terms.as_slice() {
+            // (c·x·y)ᵖ = cᵖ·xᵖ·yᵖ for c > 0 and first powers only
+            if t.coef > 0.0 && t.factors.iter().all(|(_, e)| *e == 1.0) {
+                return Sum::from_term(Term {
+                    coef: t.coef.powf(p),
+                    factors: t.factors.iter().map(|(b, _)| (b.clone(), p)).collect(),
+                });
+            }
+        }
+        Sum::from_term(Term {
+            coef: 1.0,
+            factors: vec![(Rc::new(Atom::Group(a.clone())), p)],
+        })
+    }
+
+    /// `aᵇ`.
+    pub fn pow(a: &Sum, b: &Sum) -> Sum {
+        match b.as_constant() {
+            Some(y) => Sum::powf(a, y),
+            None => Sum::atom(Atom::Pow(a.clone(), b.clone())),
+        }
+    }
+
+    /// `f(a)` (`sqrt` as the power ½).
+    pub fn apply(f: Func, a: &Sum) -> Sum {
+        if let Some(c) = a.as_constant() {
+            return Sum::num(f.apply(c));
+        }
+        if f == Func::Sqrt {
+            return Sum::powf(a, 0.5);
+        }
+        Sum::atom(Atom::Func(f, a.clone()))
+    }
+
+    /// `atan2(a, b)`.
+    pub fn atan2(a: &Sum, b: &Sum) -> Sum {
+        match (a.as_constant(), b.as_constant()) {
+            (Some(x), Some(y)) => Sum::num(x.atan2(y)),
+            _ => Sum::atom(Atom::Atan2(a.clone(), b.clone())),
+        }
+    }
+
+    /// This sum with every product of sums multiplied out and every positive integer power
+    /// of a sum expanded (inside functions and denominators too); `None` if a sum on the way
+    /// would exceed [`MAX_EXPANDED_TERMS`] terms or [`MAX_FORMULA_SIZE`] nodes.
+    pub fn expanded(&self) -> Option<Sum> {
+        let mut all: Vec<Term> = Vec::new();
+        for t in &self.terms {
+            let mut product = Sum::num(t.coef);
+            for (a, e) in &t.factors {
+                let inner = a.expanded()?;
+                let factor = match (&inner, *e) {
+                    (Atom::Group(s), e) if e > 0.0 && e.fract() == 0.0 => {
+                        // a sum of two or more terms to a power e has more than e terms
+                        // in general: refused before any work beyond the limit
+                        if e > MAX_EXPANDED_TERMS as f64 {
+                            return None;
+                        }
+                        let mut p = Sum::num(1.0);
+                        for _ in 0..(e as u64) {
+                            p = Sum::multiply_out(&p, s)?;
+                        }
+                        p
+                    }
+                    (Atom::Group(s), e) => Sum::powf(s, e),
+                    (atom, e) => Sum::from_term(Term {
+                        coef: 1.0,
+                        factors: vec![(Rc::new(atom.clone()), e)],
+                    }),
+                };
+                product = Sum::multiply_out(&product, &factor)?;
+            }
+            all.extend(product.terms);
+            if all.len() > MAX_EXPANDED_TERMS.saturating_mul(4) {
+                return None;
+            }
+        }
+        let mut out = Sum::collect(all.into_iter());
+        if out.size > MAX_FORMULA_SIZE || out.terms.len() > MAX_EXPANDED_TERMS {
+            return None;
+        }
+        // a monomial's variables in the trace's order (`s^2*t`, not `t*s^2`)
+        for t in &mut out.terms {
+            t.factors.sort_by_key(|(a, _)| match a.as_ref() {
+                Atom::Var(i) => *i,
+                _ => u32::MAX,
+            });
+        }
+        Some(out)
+    }
+
+    /// `a · b` with both multiplied out term by term (`None` beyond
+    /// [`MAX_EXPANDED_TERMS`] products).
+    fn multiply_out(a: &Sum, b: &Sum) -> Option<Sum> {
+        if a.terms.len().saturating_mul(b.terms.len()) > MAX_EXPANDED_TERMS.saturating_mul(4)
+            || a.size.saturating_mul(b.size) > MAX_FORMULA_SIZE.saturating_mul(4)
+        {
+            return None;
+        }
+        // a product whose only factor is a group again (x·x⁻¹·(…)) is unwrapped
+        let products = a.terms.iter().flat_map(|x| {
+            b.terms
+                .iter()
+                .flat_map(move |y| Sum::from_term(x.times(y)).terms)
+        });
+        let out = Sum::collect(products);
+        (out.terms.len() <= MAX_EXPANDED_TERMS).then_some(out)
+    }
+}
+
+impl Atom {
+    fn expanded(&self) -> Option<Atom> {
+        Some(match self {
+            Atom::Var(i) => Atom::Var(*i),
+            Atom::Func(f, a) => Atom::Func(*f, a.expanded()?),
+            Atom::Group(a) => Atom::Group(a.expanded()?),
+            Atom::Pow(a, b) => Atom::Pow(a.expanded()?, b.expanded()?),
+            Atom::Atan2(a, b) => Atom::Atan2(a.expanded()?, b.expanded()?),
+            Atom::Opaque(w, a, v) => Atom::Opaque(w, a.expanded()?, *v),
+        })
+    }
+}

@@ -1,0 +1,432 @@
+//! The formulas of the library's objects — and of anything generic a user writes — traced
+//! through their own generic `eval`: surfaces and their partials, curves and their
+//! derivatives on a piece, the Hermite, Bernstein and B-spline bases, a Hermite patch as
+//! `H(s)ᵀ C H(t)`.
+
+use super::display::{Math, MathTable};
+use super::{Expr, Formula, Trace};
+use crate::bspline::basis::BSplineBasis;
+use crate::curve::ParametricCurve;
+use crate::domain::Span;
+use crate::error::{Error, Result};
+use crate::hermite::patch::HermitePatch;
+use crate::surface::ParametricSurface;
+use nalgebra::Matrix4;
+use num_dual::{Dual2, HyperDual};
+
+/// Formulas traced from any code, with the conditions under which they hold.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Traced {
+    /// One formula per value the code returned.
+    pub formulas: Vec<Formula>,
+    /// The branches the numeric path took (`s - 1/4 > 0`, …): the formulas hold where these
+    /// hold.
+    pub branches: Vec<String>,
+}
+
+/// Traces `f` at the variables `vars` (`(name, value)`): `f` runs once on [`Expr`] values,
+/// and whatever it returns comes back as formulas.
+///
+/// ```
+/// use num_dual::DualNum;
+/// let out = splinelab::symbolic::trace([("x", 0.5)], |[x]| vec![x.sin() * x * 2.0])?;
+/// assert_eq!(out.formulas[0].plain(), "2*sin(x)*x");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::TooLarge`] beyond [`super::MAX_NODES`] nodes, or formulas beyond
+/// [`super::MAX_FORMULA_SIZE`] / [`super::MAX_FORMULA_DEPTH`].
+pub fn trace<const K: usize>(
+    vars: [(&str, f64); K],
+    f: impl FnOnce([Expr; K]) -> Vec<Expr>,
+) -> Result<Traced> {
+    let mut trace = Trace::new();
+    let x = vars.map(|(name, value)| trace.var(name, value));
+    let values = f(x);
+    let formulas = values
+        .iter()
+        .map(|e| trace.formula(e))
+        .collect::<Result<_>>()?;
+    Ok(Traced {
+        formulas,
+        branches: trace.branches(),
+    })
+}
+
+/// The formulas of `X`, `X_s`, `X_t`, `X_st` of a surface (each a coordinate triple), traced
+/// at `(s, t)`, with the conditions under which they hold.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SurfaceFormulas {
+    /// `X(s, t)`.
+    pub point: [Formula; 3],
+    /// `X_s`.
+    pub ds: [Formula; 3],
+    /// `X_t`.
+    pub dt: [Formula; 3],
+    /// `X_st`.
+    pub dst: [Formula; 3],
+    /// Where the formulas hold: the piece of a piecewise surface (`s ∈ [1/4, 1/2)`), then the
+    /// branches the evaluation took. Empty: everywhere the evaluation is defined.
+    pub branches: Vec<String>,
+}
+
+impl SurfaceFormulas {
+    /// The four rows `X`, `X_s`, `X_t`, `X_st` by coordinate, the conditions as notes.
+    pub fn table(&self) -> MathTable {
+        let rows = [
+            (Math::symbol("X", ""), &self.point),
+            (Math::symbol("X", "s"), &self.ds),
+            (Math::symbol("X", "t"), &self.dt),
+            (Math::symbol("X", "st"), &self.dst),
+        ];
+        MathTable {
+            header: ["", "x", "y", "z"].map(Math::text).to_vec(),
+            rows: rows
+                .into_iter()
+                .map(|(label, f)| {
+                    let mut row = vec![label];
+                    row.extend(f.iter().map(Math::from));
+                    row
+                })
+                .collect(),
+            notes: self.branches.clone(),
+        }
+    }
+
+    /// Shows [`SurfaceFormulas::table`] as rendered mathematics (the evcxr kernel calls this
+    /// for a cell's value).
+    pub fn evcxr_display(&self) {
+        self.table().evcxr_display();
+    }
+}
+
+/// The formulas of any [`ParametricSurface`]: its own generic `eval` run on hyper-dual
+/// numbers of expressions, variables `s` and `t`. For a piecewise surface they hold on the
+/// piece of `(s, t)` ([`ParametricSurface::span_at`]), recorded first in the branches.
+///
+/// ```
+/// use splinelab::symbolic::surface_formulas;
+/// use splinelab::Torus;
+/// let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7)?;
+/// assert_eq!(f.point[0].plain(), "(2 + cos(t))*cos(s)"); // f_x of Codice 3
+/// assert_eq!(f.dst[0].plain(), "sin(s)*sin(t)");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`trace`]; [`Error::NonFinite`] for a NaN or infinite trace point.
+pub fn surface_formulas<S: ParametricSurface + ?Sized>(
+    surface: &S,
+    s: f64,
+    t: f64,
+) -> Result<SurfaceFormulas> {
+    finite("trace point", &[s, t])?;
+    let traced = trace([("s", s), ("t", t)], |[sv, tv]| {
+        let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
+        let x = surface.eval(
+            HyperDual::new(sv, one, zero, zero),
+            HyperDual::new(tv, zero, one, zero),
+        );
+        let mut out = Vec::with_capacity(12);
+        let parts: [fn(&HyperDual<Expr>) -> Expr; 4] =
+            [|d| d.re, |d| d.eps1, |d| d.eps2, |d| d.eps1eps2];
+        for part in parts {
+            out.extend(x.iter().map(part));
+        }
+        out
+    })?;
+    let mut branches: Vec<String> = surface
+        .span_at(s, t)
+        .map(|[u, v]| vec![format!("s ∈ {u}"), format!("t ∈ {v}")])
+        .unwrap_or_default();
+    branches.extend(traced.branches);
+    let f: Vec<Formula> = traced.formulas.iter().map(Formula::tidy).collect();
+    let three = |k: usize| [f[k].clone(), f[k + 1].clone(), f[k + 2].clone()];
+    Ok(SurfaceFormulas {
+        point: three(0),
+        ds: three(3),
+        dt: three(6),
+        dst: three(9),
+        branches,
+    })
+}
+
+/// The formulas of a curve `C(t)`, `C′(t)`, `C″(t)` by coordinate, on the piece they hold on.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveFormulas {
+    /// `C(t)`, one formula per coordinate.
+    pub point: Vec<Formula>,
+    /// `C′(t)`.
+    pub d1: Vec<Formula>,
+    /// `C″(t)`.
+    pub d2: Vec<Formula>,
+    /// The piece of a piecewise curve ([`ParametricCurve::span_at`]); `None` for a curve
+    /// that is one formula.
+    pub span: Option<Span>,
+    /// The branches the evaluation took besides the piece.
+    pub branches: Vec<String>,
+}
+
+impl CurveFormulas {
+    /// Rows `C`, `C′`, `C″` by coordinate; the piece and branches as notes.
+    pub fn table(&self) -> MathTable {
+        let coords = ["x", "y", "z", "w"];
+        let mut header = vec![Math::text("")];
+        header.extend(
+            (0..self.point.len()).map(|k| Math::text(coords.get(k).copied().unwrap_or("·"))),
+        );
+        let rows = [
+            (Math::text("C"), &self.point),
+            (Math::text("C′"), &self.d1),
+            (Math::text("C″"), &self.d2),
+        ]
+        .into_iter()
+        .map(|(label, f)| {
+            let mut row = vec![label];
+            row.extend(f.iter().map(Math::from));
+            row
+        })
+        .collect();
+        let mut notes: Vec<String> = self.span.iter().map(|s| format!("t ∈ {s}")).collect();
+        notes.extend(self.branches.iter().cloned());
+        MathTable {
+            header,
+            rows,
+            notes,
+        }
+    }
+
+    /// Shows [`CurveFormulas::table`] as rendered mathematics in a notebook.
+    pub fn evcxr_display(&self) {
+        self.table().evcxr_display();
+    }
+}
+
+/// The formulas of any [`ParametricCurve`] and its first two derivatives on the piece that
+/// holds `t` — its own generic `eval` run on a second-order dual number of expressions. A
+/// B-spline's piece is a polynomial, a NURBS piece the rational form `Σ wᵢPᵢNᵢ / Σ wᵢNᵢ`;
+/// polynomial pieces are multiplied out in powers of `t`.
+///
+/// # Errors
+/// As [`trace`]; [`Error::NonFinite`] for a NaN or infinite `t`.
+pub fn curve_formulas<const N: usize, C: ParametricCurve<N> + ?Sized>(
+    curve: &C,
+    t: f64,
+) -> Result<CurveFormulas> {
+    finite("trace point", &[t])?;
+    let traced = trace([("t", t)], |[tv]| {
+        let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
+        let c = curve.eval(Dual2::new(tv, one, zero));
+        let mut out: Vec<Expr> = c.iter().map(|d| d.re).collect();
+        out.extend(c.iter().map(|d| d.v1));
+        // num-dual's Dual2 carries f″ in v2
+        out.extend(c.iter().map(|d| d.v2));
+        out
+    })?;
+    let f = traced
+        .formulas
+        .iter()
+        .map(Formula::tidy)
+        .collect::<Vec<_>>();
+    Ok(CurveFormulas {
+        point: f[..N].to_vec(),
+        d1: f[N..2 * N].to_vec(),
+        d2: f[2 * N..].to_vec(),
+        span: curve.span_at(t),
+        branches: traced.branches,
+    })
+}
+
+/// The cubic Hermite basis `H₀ … H₃` as formulas in `t`, traced from
+/// [`crate::hermite_basis`]: `1 - 3*t^2 + 2*t^3`, `t - 2*t^2 + t^3`, `t^3 - t^2`,
+/// `3*t^2 - 2*t^3`, as the report prints them (seed 000 §1).
+///
+/// # Errors
+/// None in practice (the trace is small); typed as [`trace`].
+pub fn hermite_basis_formulas() -> Result<[Formula; 4]> {
+    let traced = trace([("t", 0.5)], |[t]| crate::hermite_basis(t).to_vec())?;
+    let f = traced.formulas;
+    Ok([f[0].clone(), f[1].clone(), f[2].clone(), f[3].clone()])
+}
+
+/// The Bernstein polynomials `B₀ⁿ … Bₙⁿ` as formulas in `t`, traced from
+/// [`crate::bernstein_all`]: for `n = 3`, `(1 - t)^3`, `3*t*(1 - t)^2`, `3*t^2*(1 - t)`,
+/// `t^3` (seed 000 §4).
+///
+/// # Errors
+/// [`Error::TooLarge`] above degree 64 (formulas of that size are not for reading); the
+/// errors of [`crate::bernstein_all`].
+pub fn bernstein_formulas(n: usize) -> Result<Vec<Formula>> {
+    const MAX_DEGREE: usize = 64;
+    if n > MAX_DEGREE {
+        return Err(Error::TooLarge {
+            what: "degree of Bernstein formulas",
+            got: n,
+            max: MAX_DEGREE,
+        });
+    }
+    let mut out = Err(Error::TooFewPoints {
+        what: "Bernstein formulas",
+        needed: 1,
+        got: 0,
+    });
+    let traced = trace([("t", 0.5)], |[t]| {
+        out = crate::bernstein_all(n, t);
+        out.clone().unwrap_or_default()
+    })?;
+    out?;
+    Ok(traced.formulas)
+}
+
+/// The B-spline basis functions that are non-zero on one knot span, as polynomials in `t`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BasisFormulas {
+    /// The index `i` of the first function, `N_{i,p}`.
+    pub first: usize,
+    /// The degree `p`.
+    pub degree: usize,
+    /// `N_{first,p}, …, N_{first+p,p}` on the span, in powers of `t`.
+    pub functions: Vec<Formula>,
+    /// The span they hold on.
+    pub span: Span,
+}
+
+impl BasisFormulas {
+    /// One row per function, the span as a note.
+    pub fn table(&self) -> MathTable {
+        MathTable {
+            header: vec![Math::text(""), Math::text("on the span")],
+            rows: self
+                .functions
+                .iter()
+                .enumerate()
+                .map(|(j, f)| {
+                    let sub = format!("{},{}", self.first + j, self.degree);
+                    vec![Math::symbol("N", &sub), Math::from(f)]
+                })
+                .collect(),
+            notes: vec![format!("t ∈ {}", self.span)],
+        }
+    }
+
+    /// Shows [`BasisFormulas::table`] as rendered mathematics in a notebook.
+    pub fn evcxr_display(&self) {
+        self.table().evcxr_display();
+    }
+}
+
+/// The B-spline basis functions non-zero on the knot span of `t`, by the Cox–de Boor
+/// recurrence as printed in seed 001 ([`BSplineBasis::cox_de_boor`]) traced on that span and
+/// multiplied out in powers of `t`.
+///
+/// # Errors
+/// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::TooLarge`] above degree 32; as
+/// [`trace`].
+pub fn bspline_basis_formulas(basis: &BSplineBasis, t: f64) -> Result<BasisFormulas> {
+    const MAX_DEGREE: usize = 32;
+    finite("trace point", &[t])?;
+    let p = basis.degree();
+    if p > MAX_DEGREE {
+        return Err(Error::TooLarge {
+            what: "degree of B-spline basis formulas",
+            got: p,
+            max: MAX_DEGREE,
+        });
+    }
+    let span = basis.find_span(t);
+    let first = span - p;
+    let traced = trace([("t", t)], |[tv]| {
+        (first..=span)
+            .map(|i| basis.cox_de_boor(i, p, tv))
+            .collect()
+    })?;
+    Ok(BasisFormulas {
+        first,
+        degree: p,
+        functions: traced.formulas.iter().map(Formula::tidy).collect(),
+        span: basis.span_of(t),
+    })
+}
+
+/// A bicubic Hermite patch as `X(s, t) = H(s)ᵀ C H(t)`: the basis exact, the matrix numeric,
+/// and the polynomial it multiplies out to.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PatchFormulas {
+    /// `H(s)`, traced from [`crate::hermite_basis`].
+    pub h_s: [Formula; 4],
+    /// `H(t)`.
+    pub h_t: [Formula; 4],
+    /// The planes `C_x`, `C_y`, `C_z` of the Hermite matrix.
+    pub c: [Matrix4<f64>; 3],
+    /// `X(s, t)` by coordinate, multiplied out in powers of `s` and `t` (local parameters).
+    pub x: [Formula; 3],
+}
+
+impl PatchFormulas {
+    /// The basis, the three planes and the polynomials.
+    pub fn table(&self) -> MathTable {
+        let h = |f: &[Formula; 4], v: &str| -> Vec<Vec<Math>> {
+            f.iter()
+                .enumerate()
+                .map(|(i, f)| {
+                    vec![
+                        Math::text(&format!("H{}({v})", subscript_digit(i))),
+                        Math::from(f),
+                    ]
+                })
+                .collect()
+        };
+        let mut rows = h(&self.h_s, "s");
+        for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+            rows.push(vec![Math::symbol("C", axis), Math::matrix(&self.c[k])]);
+        }
+        for (k, axis) in ["x", "y", "z"].iter().enumerate() {
+            rows.push(vec![Math::text(axis), Math::from(&self.x[k])]);
+        }
+        MathTable {
+            header: vec![Math::text(""), Math::text("X(s, t) = H(s)ᵀ C H(t)")],
+            rows,
+            notes: vec![
+                "H(t) is H(s) with t for s; the polynomials are in the patch's local parameters s, t ∈ [0, 1].".into(),
+            ],
+        }
+    }
+
+    /// Shows [`PatchFormulas::table`] as rendered mathematics in a notebook.
+    pub fn evcxr_display(&self) {
+        self.table().evcxr_display();
+    }
+}
+
+fn subscript_digit(i: usize) -> char {
+    char::from_u32(0x2080 + (i as u32 % 10)).unwrap_or('?')
+}
+
+/// The formulas of a Hermite patch ([`PatchFormulas`]).
+///
+/// # Errors
+/// As [`trace`].
+pub fn patch_formulas(patch: &HermitePatch) -> Result<PatchFormulas> {
+    let traced = trace([("s", 0.5), ("t", 0.5)], |[s, t]| {
+        let mut out = crate::hermite_basis(s).to_vec();
+        out.extend(crate::hermite_basis(t));
+        out.extend(patch.eval(s, t).iter().copied());
+        out
+    })?;
+    let f: Vec<Formula> = traced.formulas;
+    let x: Vec<Formula> = f[8..].iter().map(Formula::tidy).collect();
+    Ok(PatchFormulas {
+        h_s: [f[0].clone(), f[1].clone(), f[2].clone(), f[3].clone()],
+        h_t: [f[4].clone(), f[5].clone(), f[6].clone(), f[7].clone()],
+        c: patch.planes(),
+        x: [x[0].clone(), x[1].clone(), x[2].clone()],
+    })
+}
+
+fn finite(what: &'static str, values: &[f64]) -> Result<()> {
+    match values.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(Error::NonFinite { what, value }),
+        None => Ok(()),
+    }
+}
