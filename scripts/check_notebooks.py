@@ -14,7 +14,8 @@ import json
 import sys
 
 # The Debug text of splinelab values that have a display of their own.
-DEBUG_DUMPS = ("Figure {", "Table {", "Html {")
+DEBUG_DUMPS = ("Figure {", "Table {", "Html {", "SurfaceFormulas {", "CurveFormulas {",
+               "BasisFormulas {", "PatchFormulas {", "MathTable {", "Formula {")
 
 
 def problems(path):

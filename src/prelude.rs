@@ -27,6 +27,9 @@ pub use crate::{
     KnotVector, Lagrange, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
     Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
 };
+// formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and
+// `surface!`, a user surface written once for numbers and formulas alike
+pub use crate::{surface, symbolic};
 
 #[cfg(feature = "report")]
 pub use crate::report::{

@@ -96,6 +96,40 @@ impl<S: ParametricSurface + ?Sized> SurfaceDerivatives for S {
     }
 }
 
+/// Defines a unit struct `Name` that is a [`ParametricSurface`] given by one expression in `s`
+/// and `t`, generic over the number type — the way to write one's own surface once and get
+/// its points, its exact partials (hyper-dual numbers) *and* its formulas
+/// ([`crate::symbolic::surface_formulas`]), since a closure cannot be generic. Literals go
+/// on the right of an operator (`s * 2.0`), and the body sees [`num_dual::DualNum`]'s
+/// functions (`sin`, `exp`, `powi`, `sqrt`, …).
+///
+/// ```
+/// use splinelab::{surface, SurfaceDerivatives};
+/// use splinelab::symbolic::surface_formulas;
+/// surface!(Saddle = |s, t| nalgebra::Vector3::new(s, t, s * t.sin()));
+/// assert!((Saddle.partials(0.5, 0.25).dst.z - 0.25f64.cos()).abs() < 1e-15);
+/// assert_eq!(surface_formulas(&Saddle, 0.5, 0.25)?.dst[2].plain(), "cos(t)");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+#[macro_export]
+macro_rules! surface {
+    ($name:ident = |$s:ident, $t:ident| $body:expr) => {
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+        struct $name;
+        impl $crate::ParametricSurface for $name {
+            #[allow(unused_imports)]
+            fn eval<D: $crate::num_dual::DualNum<Primitive = f64> + Copy>(
+                &self,
+                $s: D,
+                $t: D,
+            ) -> $crate::nalgebra::Vector3<D> {
+                use $crate::num_dual::DualNum as _;
+                $body
+            }
+        }
+    };
+}
+
 /// A user surface given as a closure over hyper-dual numbers.
 ///
 /// Rust closures cannot be generic, so the closure is written for [`HyperDual64`], the

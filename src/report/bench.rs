@@ -243,8 +243,22 @@ fn table_i() -> Result<usize> {
     Ok(black_box(crate::comparison::table_i()?).len())
 }
 
+/// The twelve formulas of the torus (`X`, `X_s`, `X_t`, `X_st` by coordinate): traced
+/// through `Torus::eval` on hyper-dual numbers of expressions, simplified and printed.
+fn symbolic_torus() -> Result<usize> {
+    let f = crate::symbolic::surface_formulas(&Torus::default(), 0.3, 0.7)?;
+    let mut chars = 0;
+    for part in [&f.point, &f.ds, &f.dt, &f.dst] {
+        for formula in part {
+            chars += black_box(formula.plain()).len();
+        }
+    }
+    black_box(chars);
+    Ok(12)
+}
+
 /// Every workload.
-pub const WORKLOADS: [Workload; 12] = [
+pub const WORKLOADS: [Workload; 13] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
@@ -304,6 +318,11 @@ pub const WORKLOADS: [Workload; 12] = [
         id: "table-i",
         description: "seed 004's Table I regenerated: 36 cells, each the printed configuration, the fewest points with the paper's rule and the automatic search (all cores)",
         run: table_i,
+    },
+    Workload {
+        id: "symbolic-torus",
+        description: "the torus's 12 formulas (X, X_s, X_t, X_st by coordinate) traced through Torus::eval on hyper-dual expressions, simplified and printed (points: formulas)",
+        run: symbolic_torus,
     },
 ];
 

@@ -94,11 +94,37 @@ impl Math {
     }
 }
 
+impl MathTable {
+    /// Functions named `name₀, name₁, …` of the variable `var`, one row each:
+    /// `MathTable::named("H", "t", &hermite_basis_formulas()?)`.
+    pub fn named(name: &str, var: &str, formulas: &[Formula]) -> MathTable {
+        MathTable {
+            header: Vec::new(),
+            rows: formulas
+                .iter()
+                .enumerate()
+                .map(|(i, f)| {
+                    let label = Math {
+                        latex: format!("{name}_{{{i}}}({var})"),
+                        mathml: format!(
+                            "<msub><mi>{}</mi><mn>{i}</mn></msub><mo>(</mo><mi>{}</mi><mo>)</mo>",
+                            escape(name),
+                            escape(var)
+                        ),
+                    };
+                    vec![label, Math::from(f)]
+                })
+                .collect(),
+            notes: Vec::new(),
+        }
+    }
+}
+
 /// A table of mathematics: a header row, rows of cells (the first usually a label) and notes
 /// (the conditions under which the formulas hold).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MathTable {
-    /// The header cells.
+    /// The header cells (none: no header row).
     pub header: Vec<Math>,
     /// The rows.
     pub rows: Vec<Vec<Math>>,
@@ -123,7 +149,10 @@ impl MathTable {
                 .collect::<Vec<_>>()
                 .join(" & ")
         };
-        let mut body = vec![line(&self.header)];
+        let mut body: Vec<String> = Vec::new();
+        if !self.header.is_empty() {
+            body.push(line(&self.header));
+        }
         body.extend(self.rows.iter().map(|r| line(r)));
         let mut out = format!(
             "\\begin{{array}}{{{}}}\n{}\n\\end{{array}}",
@@ -150,7 +179,11 @@ impl MathTable {
                     .collect::<String>()
             )
         };
-        let mut rows = row(&self.header);
+        let mut rows = if self.header.is_empty() {
+            String::new()
+        } else {
+            row(&self.header)
+        };
         for r in &self.rows {
             rows.push_str(&row(r));
         }

@@ -7,10 +7,19 @@
 //! use splinelab::symbolic::surface_formulas;
 //! use splinelab::Torus;
 //! let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7)?;
-//! assert_eq!(f.dst[0].plain(), "sin(s)*sin(t)");          // x_st of Codice 3
+//! assert_eq!(f.point[0].plain(), "(2 + cos(t))*cos(s)");   // f_x of Codice 3
+//! assert_eq!(f.ds[0].plain(), "-sin(s)*(2 + cos(t))");     // diff(f_x, s)
+//! assert_eq!(f.dst[0].plain(), "sin(s)*sin(t)");           // diff(f_x, s, t)
 //! assert!((f.dst[0].eval(&[0.3, 0.7]) - 0.3f64.sin() * 0.7f64.sin()).abs() < 1e-15);
 //! # Ok::<(), splinelab::Error>(())
 //! ```
+//!
+//! **The API.** [`surface_formulas`] (any [`crate::ParametricSurface`]: `X`, `X_s`, `X_t`,
+//! `X_st`), [`curve_formulas`] (any [`crate::ParametricCurve`]: `C`, `C′`, `C″` on the piece of
+//! `t`), [`hermite_basis_formulas`], [`bernstein_formulas`], [`bspline_basis_formulas`] (on a
+//! knot span), [`patch_formulas`] (`H(s)ᵀ C H(t)`), and [`trace`] for any generic code of
+//! one's own; [`crate::surface!`] writes a user surface once for numbers and formulas. Each
+//! result has a [`MathTable`] (`table()`) that a notebook shows as rendered mathematics.
 //!
 //! **Expressions.** An [`Expr`] is `Copy`: an index into a per-thread arena of hash-consed
 //! nodes (equal subexpressions are one node) and its value at the trace point, so `re()`,
@@ -19,19 +28,39 @@
 //! at most [`MAX_NODES`] nodes ([`crate::Error::TooLarge`] beyond). One trace per thread at a
 //! time: starting another makes the first one's handles stale, and their formulas are refused.
 //!
-//! **Simplification, on construction:** constants folded; `x + 0`, `x·1`, `x/1`, `x⁰`, `x¹`
-//! removed; `x·0 = 0`; `x − x = 0`, `x + x = 2x`, `x·x = x²`, `x/x = 1`; signs pulled out of
-//! products (`(−a)·b = −(a·b)`), double negation removed, constants first in products. *Not
-//! done* (yet): collecting like terms beyond `x + x`, common factors, common denominators,
-//! trigonometric identities.
+//! **Simplification** (on capture, into a normal form: a sum of terms, each a coefficient times
+//! a product of powers): constants folded and multiplied into sums; like terms collected
+//! (`x·y + 2y·x = 3x·y`); equal bases merged by their exponents (`x²·x⁻¹ = x`,
+//! `√(1+x²)·√(1+x²) = 1 + x²`); `0` and `1` removed; a sum that is a factor keeps its sign
+//! outside (`(−a − b)·c = −(a + b)·c`); `√(x²)` stays (it is `|x|`, not `x`). Printing pulls
+//! out the factors every term of a sum shares, other than powers of a variable, and a common
+//! minus sign (`−sin s·cos t − 2 sin s = −sin(s)*(2 + cos(t))`); it orders a sum by ascending
+//! powers with constants first and a positive term leading (the report's
+//! `1 - 3*t^2 + 2*t^3`, `t^3 - t^2`; Codice 3's `2 + cos(t)`), and a product's factors in the
+//! order the traced code produced them. Polynomial and rational pieces (splines, bases, a
+//! patch) are multiplied out in powers of the variables ([`Formula::tidy`],
+//! [`Formula::expanded`]); other formulas keep their products (`(2 + cos(t))*cos(s)`).
+//! *Not done:* trigonometric and other function identities (`sin² + cos² = 1`), common
+//! denominators (a NURBS derivative is a sum of quotients), factoring polynomials, and
+//! cleaning the rounding residue of the traced `f64` arithmetic (a coefficient that is `0` in
+//! exact arithmetic can print as `4.9e-17`).
 //!
-//! **Printing.** Plain text with ASCII operators (`-sin(s)*(cos(t) + 2)`), operator
-//! precedence respected and no redundant brackets; a constant that is exactly a small rational
-//! prints as a fraction (`1/4`), others as the shortest decimal that reads back to the same
-//! `f64` ([`number`]).
+//! **Printing.** Plain text with ASCII operators ([`Formula::plain`]: `-sin(s)*(2 + cos(t))`,
+//! `3*t^2/2`, readable back by a parser with the usual precedence), LaTeX
+//! ([`Formula::latex`]) and presentation MathML ([`Formula::mathml`], which browsers render
+//! without a script: a notebook's HTML copy shows it); brackets only where precedence needs
+//! them; a constant that is exactly a small rational prints as a fraction (`1/4`), others as
+//! the shortest decimal that reads back to the same `f64` ([`number`]).
 //!
-//! **Branches.** Where the numeric path branched on a value (`abs`, `signum`, comparisons), the
-//! condition is recorded ([`Trace::branches`]): a formula holds only where they hold.
+//! **Branches.** Where the numeric path branched on a value (`abs`, `signum`, comparisons),
+//! the condition is recorded ([`Trace::branches`]); piecewise curves and surfaces name the
+//! piece the formula holds on (`s ∈ [1/4, 1/2)`, [`crate::ParametricCurve::span_at`]): no
+//! formula is presented as valid beyond them.
+//!
+//! **Limits.** [`MAX_NODES`] per trace; a formula written out as a tree at most
+//! [`MAX_FORMULA_SIZE`] nodes and [`MAX_FORMULA_DEPTH`] deep (so printing and evaluation
+//! terminate and cannot overflow the stack); multiplying out at most [`MAX_EXPANDED_TERMS`]
+//! terms. Beyond each: [`crate::Error::TooLarge`], never a panic.
 //!
 //! **No formula:** `%` gives an opaque node carrying its numeric value (printed `rem[…]`);
 //! parsing (`Num::from_str_radix`) is an error.
