@@ -20,6 +20,11 @@
 //!   B-spline collocation.
 //! - [`blending`]: seed 003's blending functions, the printed `bspline` and OpenGL-evaluator
 //!   procedures, the sliding bicubic surface.
+//! - [`symbolic`]: the same generic code run on an expression type inside the dual numbers,
+//!   so formulas and numbers come from one path: the partials of any surface
+//!   ([`symbolic::surface_formulas`]; [`surface!`] writes one's own), curves on a piece,
+//!   the Hermite, Bernstein and B-spline bases, a patch as `H(s)ᵀ C H(t)`; plain text,
+//!   LaTeX and MathML.
 //! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
 //! - [`report`] (feature `report`, on by default): figures and tables of the user's own
 //!   objects ([`report::draw`], [`report::table`](mod@report::table)), the seeds' outputs built with them, output

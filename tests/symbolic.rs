@@ -338,9 +338,9 @@ proptest! {
                 for k in 0..3 {
                     let v = formulas[k].eval(&[s2, t2]);
                     let scale = values[k].abs().max(1.0);
-                    prop_assert!((v - values[k]).abs() <= 1e-10 * scale, "{}: {} vs {}", formulas[k].plain(), v, values[k]);
+                    prop_assert!((v - values[k]).abs() <= 1e-12 * scale, "{}: {} vs {}", formulas[k].plain(), v, values[k]);
                     let parsed = parse_eval(&formulas[k].plain(), &[("s", s2), ("t", t2)]);
-                    prop_assert!((parsed - values[k]).abs() <= 1e-10 * scale, "{} parsed: {} vs {}", formulas[k].plain(), parsed, values[k]);
+                    prop_assert!((parsed - values[k]).abs() <= 1e-12 * scale, "{} parsed: {} vs {}", formulas[k].plain(), parsed, values[k]);
                 }
             }
         }
@@ -580,6 +580,26 @@ fn curve_formulas_hold_on_their_piece() {
         curve_formulas(&circle, f64::INFINITY),
         Err(Error::NonFinite { .. })
     ));
+    // a Bézier curve (the B-spline of order n + 1): one polynomial on its whole domain,
+    // equal to de Casteljau's point everywhere
+    let pts = vec![
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 2.0),
+        Vector2::new(3.0, 3.0),
+        Vector2::new(4.0, -1.0),
+        Vector2::new(6.0, 0.5),
+    ];
+    let bezier = BSplineCurve::with_order(pts.clone(), pts.len()).unwrap();
+    let f = curve_formulas(&bezier, 0.4).unwrap();
+    let span = f.span.unwrap();
+    assert_eq!((span.lo, span.hi, span.closed), (0.0, 1.0, true));
+    for t in [0.0, 0.25, 0.6, 1.0] {
+        let p = splinelab::de_casteljau(&pts, t).unwrap();
+        for k in 0..2 {
+            assert!(close(f.point[k].eval(&[t]), p[k]), "{}", f.point[k]);
+        }
+    }
+    assert!(f.point[0].plain().contains("t^4"), "{}", f.point[0]);
 }
 
 #[test]

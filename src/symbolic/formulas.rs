@@ -206,7 +206,9 @@ impl CurveFormulas {
 /// The formulas of any [`ParametricCurve`] and its first two derivatives on the piece that
 /// holds `t` — its own generic `eval` run on a second-order dual number of expressions. A
 /// B-spline's piece is a polynomial, a NURBS piece the rational form `Σ wᵢPᵢNᵢ / Σ wᵢNᵢ`;
-/// polynomial pieces are multiplied out in powers of `t`.
+/// polynomial pieces are multiplied out in powers of `t`. A Bézier curve is the B-spline of
+/// order `n + 1` on its control points (`BSplineCurve::with_order(points, points.len())`):
+/// one polynomial on `[0, 1]`.
 ///
 /// # Errors
 /// As [`trace`]; [`Error::NonFinite`] for a NaN or infinite `t`.
