@@ -8,7 +8,9 @@ included, deliberately). Names the notebook and the cell.
 
 It also fails when a figure, table or HTML view of splinelab shows up as its `Debug` text
 instead of its display (evcxr does that to the value of the first cell of a session that
-uses `?`; the notebooks settle it with one `?` in their `use` cell).
+uses `?`; the notebooks settle it with one `?` in their `use` cell), and when mathematics
+(text/latex) comes without its MathML twin in text/html, which is what the HTML copy shows
+and browsers render without a script.
 """
 import json
 import sys
@@ -40,6 +42,11 @@ def problems(path):
                     yield number, plain.strip().splitlines()[0]
                 elif len(out.get("data", {})) == 1 and plain.startswith(DEBUG_DUMPS):
                     yield number, "shown as Debug text, not displayed: " + plain[:60]
+                data = out.get("data", {})
+                if "text/latex" in data and "<math" not in "".join(data.get("text/html", [])):
+                    # the HTML copy shows text/html when there is one; without MathML beside
+                    # the LaTeX it would need MathJax (a script from the network) to render
+                    yield number, "mathematics without its MathML (text/html) twin"
 
 
 def self_test():
@@ -64,8 +71,15 @@ def self_test():
         "a figure shown as its Debug text": (
             notebook([{"output_type": "execute_result",
                        "data": {"text/plain": ["Figure { drawing: Scene(Figure3d { title: \"x\" }) }"]}}]), True),
+        "LaTeX without MathML": (
+            notebook([{"output_type": "display_data",
+                       "data": {"text/latex": ["$$x^2$$"], "text/plain": [""]}}]), True),
         "clean": (notebook([{"output_type": "stream", "name": "stdout", "text": ["table\n"]},
-                            {"output_type": "execute_result", "data": {"text/plain": ["42"]}}]), False),
+                            {"output_type": "execute_result", "data": {"text/plain": ["42"]}},
+                            {"output_type": "display_data",
+                             "data": {"text/latex": ["$$x^2$$"],
+                                      "text/html": ["<math display=\"block\"><msup><mi>x</mi><mn>2</mn></msup></math>"]}}]),
+                  False),
     }
     wrong = []
     with tempfile.TemporaryDirectory() as d:

@@ -103,6 +103,10 @@ impl<S: ParametricSurface + ?Sized> SurfaceDerivatives for S {
 /// on the right of an operator (`s * 2.0`), and the body sees [`num_dual::DualNum`]'s
 /// functions (`sin`, `exp`, `powi`, `sqrt`, …).
 ///
+/// In an evcxr notebook write the struct and its `impl ParametricSurface` out instead (as
+/// notebook 02's *Try it* does): evcxr runs a macro call inside a function, where the struct
+/// it defines cannot outlive the cell.
+///
 /// ```
 /// use splinelab::{surface, SurfaceDerivatives};
 /// use splinelab::symbolic::surface_formulas;

@@ -663,3 +663,30 @@ fn bad_input_gets_typed_errors() {
     assert_eq!(odd.formulas[1].eval(&[1.0]), f64::INFINITY);
     assert!(odd.formulas[0].latex().contains("NaN"));
 }
+
+#[test]
+fn tables_of_formulas_in_latex_and_mathml() {
+    use splinelab::symbolic::MathTable;
+    let h = hermite_basis_formulas().unwrap();
+    let table = MathTable::named("H", "t", &h);
+    let latex = table.latex();
+    assert!(
+        latex.contains("H_{0}(t) = & 1 - 3 t^{2} + 2 t^{3}"),
+        "{latex}"
+    );
+    assert!(latex.contains("H_{2}(t) = & t^{3} - t^{2}"), "{latex}");
+    balanced_tags(&table.html());
+    // a piecewise curve's table says where its formulas hold
+    let basis = BSplineBasis::new(KnotVector::new(vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]), 2);
+    let b = bspline_basis_formulas(&basis, 1.5).unwrap().table();
+    assert_eq!(b.notes, ["These formulas hold where t ∈ [1, 2]."]);
+    // the patch: basis exact, matrix numeric (its brackets drawn by CSS), polynomials
+    let patch = HermitePatch::from_surface(&Torus::default(), &Rect::unit());
+    let p = patch_formulas(&patch).unwrap().table();
+    balanced_tags(&p.html().replace("<p>", "").replace("</p>", ""));
+    assert!(
+        p.latex().contains("\\begin{pmatrix}3 & 0 & "),
+        "{}",
+        p.latex()
+    );
+}

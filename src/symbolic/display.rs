@@ -77,7 +77,9 @@ impl Math {
                 .join(" \\\\ ")
         );
         let mathml = format!(
-            "<mrow><mo>(</mo><mtable>{}</mtable><mo>)</mo></mrow>",
+            // brackets drawn as the table's rounded side borders: a stretched `(` needs an
+            // OpenType MATH font, which a reader's browser may not have
+            "<mrow><mtable style=\"border-left:1.5px solid;border-right:1.5px solid;border-radius:0.5em;padding:0 0.3em\">{}</mtable></mrow>",
             rows.iter()
                 .map(|r| format!(
                     "<mtr>{}</mtr>",
@@ -105,9 +107,9 @@ impl MathTable {
                 .enumerate()
                 .map(|(i, f)| {
                     let label = Math {
-                        latex: format!("{name}_{{{i}}}({var})"),
+                        latex: format!("{name}_{{{i}}}({var}) ="),
                         mathml: format!(
-                            "<msub><mi>{}</mi><mn>{i}</mn></msub><mo>(</mo><mi>{}</mi><mo>)</mo>",
+                            "<msub><mi>{}</mi><mn>{i}</mn></msub><mo>(</mo><mi>{}</mi><mo>)</mo><mo>=</mo>",
                             escape(name),
                             escape(var)
                         ),
@@ -173,7 +175,7 @@ impl MathTable {
                 cells
                     .iter()
                     .map(|c| format!(
-                        "<mtd style=\"text-align:left;padding:0.2em 0.8em\">{}</mtd>",
+                        "<mtd style=\"text-align:left;padding:0.2em 0.8em\"><mstyle displaystyle=\"true\">{}</mstyle></mtd>",
                         c.mathml
                     ))
                     .collect::<String>()
@@ -189,11 +191,8 @@ impl MathTable {
         }
         let mut out =
             format!("<math display=\"block\"><mtable columnalign=\"left\">{rows}</mtable></math>");
-        if !self.notes.is_empty() {
-            out.push_str(&format!(
-                "<p>Holds where: {}</p>",
-                escape(&self.notes.join("; "))
-            ));
+        for n in &self.notes {
+            out.push_str(&format!("<p>{}</p>", escape(n)));
         }
         out
     }

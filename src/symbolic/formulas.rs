@@ -90,7 +90,7 @@ impl SurfaceFormulas {
                     row
                 })
                 .collect(),
-            notes: self.branches.clone(),
+            notes: holds_where(&self.branches),
         }
     }
 
@@ -188,12 +188,12 @@ impl CurveFormulas {
             row
         })
         .collect();
-        let mut notes: Vec<String> = self.span.iter().map(|s| format!("t ∈ {s}")).collect();
-        notes.extend(self.branches.iter().cloned());
+        let mut conditions: Vec<String> = self.span.iter().map(|s| format!("t ∈ {s}")).collect();
+        conditions.extend(self.branches.iter().cloned());
         MathTable {
             header,
             rows,
-            notes,
+            notes: holds_where(&conditions),
         }
     }
 
@@ -308,7 +308,7 @@ impl BasisFormulas {
                     vec![Math::symbol("N", &sub), Math::from(f)]
                 })
                 .collect(),
-            notes: vec![format!("t ∈ {}", self.span)],
+            notes: holds_where(&[format!("t ∈ {}", self.span)]),
         }
     }
 
@@ -424,6 +424,17 @@ pub fn patch_formulas(patch: &HermitePatch) -> Result<PatchFormulas> {
         c: patch.planes(),
         x: [x[0].clone(), x[1].clone(), x[2].clone()],
     })
+}
+
+/// The note under a table of formulas that hold only under `conditions` (none if empty).
+fn holds_where(conditions: &[String]) -> Vec<String> {
+    if conditions.is_empty() {
+        return Vec::new();
+    }
+    vec![format!(
+        "These formulas hold where {}.",
+        conditions.join(", ")
+    )]
 }
 
 fn finite(what: &'static str, values: &[f64]) -> Result<()> {
