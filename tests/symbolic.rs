@@ -563,6 +563,9 @@ fn curve_formulas_hold_on_their_piece() {
                 assert!((f.d2[k].eval(&[t]) - d2[k]).abs() <= 1e-8 * d2.norm().max(1.0));
             }
         }
+        // the rational form over one denominator: (N′·D − N·D′)/D², (…)/D³
+        assert!(f.d1[0].plain().ends_with(")^2"), "{}", f.d1[0]);
+        assert!(f.d2[1].plain().ends_with(")^3"), "{}", f.d2[1]);
         let g = curve_formulas(&cubic, t0).unwrap();
         let span = g.span.unwrap();
         for t in [span.lo, 0.5 * (span.lo + span.hi)] {

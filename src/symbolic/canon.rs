@@ -504,6 +504,70 @@ impl Sum {
         Some(out)
     }
 
+    /// This sum over one common denominator, when every denominator among its terms is a
+    /// power of one and the same group `D` — a rational function and its derivatives:
+    /// `N′/D − N·D′/D²` becomes `(N′·D − N·D′)/D²`, the numerator multiplied out. `None` when
+    /// no term has a denominator, when there are several different ones, or beyond
+    /// [`MAX_EXPANDED_TERMS`].
+    pub fn over_common_denominator(&self) -> Option<Sum> {
+        let is_den = |(a, e): &(Rc<Atom>, f64)| *e < 0.0 && matches!(a.as_ref(), Atom::Group(_));
+        let mut den: Option<Rc<Atom>> = None;
+        let mut highest = 0.0f64;
+        let mut parts: Vec<(Term, f64)> = Vec::with_capacity(self.terms.len());
+        for t in &self.terms {
+            let mut rest = t.clone();
+            let mut k = 0.0;
+            let mut found = t.factors.iter().enumerate().filter(|(_, f)| is_den(f));
+            if let Some((pos, (a, e))) = found.next() {
+                if found.next().is_some() || e.fract() != 0.0 {
+                    return None;
+                }
+                match &den {
+                    None => den = Some(a.clone()),
+                    Some(d) if same_atom(d, a) => {}
+                    Some(_) => return None,
+                }
+                k = -e;
+                rest.factors.remove(pos);
+            }
+            highest = highest.max(k);
+            parts.push((rest, k));
+        }
+        let d = den?;
+        let Atom::Group(inner) = d.as_ref() else {
+            return None;
+        };
+        if highest > MAX_EXPANDED_TERMS as f64 {
+            return None;
+        }
+        // the powers D⁰ … D^K, multiplied out once each
+        let mut powers = vec![Sum::num(1.0)];
+        for _ in 0..highest as usize {
+            let next = Sum::multiply_out(powers.last()?, inner)?;
+            powers.push(next);
+        }
+        let mut numerator: Vec<Term> = Vec::new();
+        for (rest, k) in parts {
+            let product = Sum::multiply_out(
+                &Sum::from_terms(vec![rest]),
+                &powers[(highest - k) as usize],
+            )?;
+            numerator.extend(product.terms);
+            if numerator.len() > MAX_EXPANDED_TERMS.saturating_mul(4) {
+                return None;
+            }
+        }
+        let numerator = Sum::collect(numerator.into_iter());
+        if numerator.terms.len() > MAX_EXPANDED_TERMS {
+            return None;
+        }
+        let over = Term {
+            coef: 1.0,
+            factors: vec![(d.clone(), -highest)],
+        };
+        Some(Sum::mul(&numerator, &Sum::from_term(over)))
+    }
+
     /// `a · b` with both multiplied out term by term (`None` beyond
     /// [`MAX_EXPANDED_TERMS`] products).
     fn multiply_out(a: &Sum, b: &Sum) -> Option<Sum> {

@@ -39,9 +39,11 @@
 //! `1 - 3*t^2 + 2*t^3`, `t^3 - t^2`; Codice 3's `2 + cos(t)`), and a product's factors in the
 //! order the traced code produced them. Polynomial and rational pieces (splines, bases, a
 //! patch) are multiplied out in powers of the variables ([`Formula::tidy`],
-//! [`Formula::expanded`]); other formulas keep their products (`(2 + cos(t))*cos(s)`).
-//! *Not done:* trigonometric and other function identities (`sin² + cos² = 1`), common
-//! denominators (a NURBS derivative is a sum of quotients), factoring polynomials, and
+//! [`Formula::expanded`]), over one denominator where all denominators are powers of one
+//! polynomial (a NURBS piece's derivatives: `(N′·D − N·D′)/D^2`); other formulas keep their
+//! products (`(2 + cos(t))*cos(s)`). *Not done:* trigonometric and other function
+//! identities (`sin² + cos² = 1`), common denominators of different polynomials, cancelling
+//! common factors of a numerator and denominator, factoring polynomials, and
 //! cleaning the rounding residue of the traced `f64` arithmetic (a coefficient that is `0` in
 //! exact arithmetic can print as `4.9e-17`).
 //!

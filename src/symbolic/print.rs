@@ -122,14 +122,25 @@ impl Formula {
     }
 
     /// [`Formula::expanded`] if the formula is rational in its variables (no function of
-    /// them: the polynomial or rational piece of a spline, which reads best in powers), else
+    /// them: the polynomial or rational piece of a spline, which reads best in powers), over
+    /// one common denominator where its denominators are powers of one polynomial (a NURBS
+    /// piece and its derivatives: `(N′·D − N·D′)/D^2`), else
     /// the formula as it is (the torus's `(2 + cos(t))*cos(s)`); also as it is where
     /// multiplying out would exceed [`MAX_FORMULA_SIZE`].
     pub fn tidy(&self) -> Formula {
         if !self.root.is_rational() {
             return self.clone();
         }
-        self.expanded().unwrap_or_else(|_| self.clone())
+        match self.expanded() {
+            Ok(f) => match f.root.over_common_denominator() {
+                Some(root) if check(&root).is_ok() => Formula {
+                    root,
+                    names: f.names,
+                },
+                _ => f,
+            },
+            Err(_) => self.clone(),
+        }
     }
 
     /// Plain text: `-sin(s)*(2 + cos(t))`, `3*t*(1 - t)^2`, `t/4` (ASCII, readable back by
