@@ -18,8 +18,8 @@
 //! Products of sums are *not* multiplied out unless asked ([`Sum::expanded`]), so the
 //! Bernstein polynomial `3t(1 − t)²` stays as the report prints it.
 
+use super::expr::FastMap;
 use super::expr::Func;
-use std::collections::HashMap;
 use std::rc::Rc;
 
 /// The most nodes a formula may have when written out as a tree (shared subexpressions
@@ -338,7 +338,7 @@ impl Sum {
     /// first occurrence of each keeps its place.
     fn collect(terms: impl Iterator<Item = Term>) -> Sum {
         let mut out: Vec<Term> = Vec::new();
-        let mut index: HashMap<u64, Vec<usize>> = HashMap::new();
+        let mut index: FastMap<u64, Vec<usize>> = FastMap::default();
         for t in terms {
             let slot = index.entry(t.monomial_hash()).or_default();
             match slot.iter().copied().find(|&k| out[k].like(&t)) {

@@ -3,6 +3,41 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// A multiply-rotate hasher for the small integer keys of the symbolic module (arena nodes,
+/// node ids, structural hashes): the keys are not attacker-chosen, and SipHash's cost
+/// dominated hash-consing.
+#[derive(Default, Clone, Copy)]
+pub(crate) struct FastHasher(u64);
+
+impl Hasher for FastHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut word = [0u8; 8];
+            word[..chunk.len()].copy_from_slice(chunk);
+            self.write_u64(u64::from_le_bytes(word));
+        }
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_u32(&mut self, x: u32) {
+        self.write_u64(u64::from(x));
+    }
+    fn write_u8(&mut self, x: u8) {
+        self.write_u64(u64::from(x));
+    }
+    fn write_usize(&mut self, x: usize) {
+        self.write_u64(x as u64);
+    }
+}
+
+/// A `HashMap` with [`FastHasher`].
+pub(crate) type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<FastHasher>>;
 
 /// The most nodes one trace may create ([`crate::symbolic::Trace::formula`] returns
 /// [`crate::Error::TooLarge`] beyond).
@@ -166,7 +201,7 @@ impl Node {
 #[derive(Debug, Default)]
 pub(crate) struct Arena {
     pub(crate) nodes: Vec<Node>,
-    index: HashMap<(u8, u64, u64, &'static str), u32>,
+    index: FastMap<(u8, u64, u64, &'static str), u32>,
     /// Incremented when a trace ends: handles of an older trace are stale.
     pub(crate) generation: u32,
     /// Set when [`MAX_NODES`] was reached; later nodes all collapse onto one opaque node.
@@ -208,7 +243,7 @@ impl Arena {
         self.reset();
         self.live = false;
         self.nodes.shrink_to_fit();
-        self.index = HashMap::new();
+        self.index = FastMap::default();
         self.branches = Vec::new();
     }
 

@@ -44,10 +44,7 @@ pub fn trace<const K: usize>(
     let mut trace = Trace::new();
     let x = vars.map(|(name, value)| trace.var(name, value));
     let values = f(x);
-    let formulas = values
-        .iter()
-        .map(|e| trace.formula(e))
-        .collect::<Result<_>>()?;
+    let formulas = trace.formulas(&values)?;
     Ok(Traced {
         formulas,
         branches: trace.branches(),

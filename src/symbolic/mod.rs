@@ -142,6 +142,12 @@ impl Trace {
     /// [`Error::TooLarge`] if the trace exceeded [`MAX_NODES`]; [`Error::Degenerate`] for a
     /// handle of another (ended) trace.
     pub fn formula(&self, e: &Expr) -> Result<Formula> {
+        self.check_live(std::slice::from_ref(e))?;
+        Formula::capture(e, &current_names())
+    }
+
+    /// That the trace did not overflow and that every handle is this trace's.
+    fn check_live(&self, es: &[Expr]) -> Result<()> {
         let (overflowed, nodes) = ARENA.with(|a| {
             let a = a.borrow();
             (a.overflowed, a.nodes.len())
@@ -153,13 +159,23 @@ impl Trace {
                 max: MAX_NODES,
             });
         }
-        if !self.live() || e.generation != self.generation {
+        if !self.live() || es.iter().any(|e| e.generation != self.generation) {
             return Err(Error::Degenerate {
                 what: "symbolic formula",
                 reason: "the expression belongs to a trace that has ended",
             });
         }
-        Formula::capture(e, &current_names())
+        Ok(())
+    }
+
+    /// The formulas of `es`, copied out in one pass (their shared subexpressions simplified
+    /// once): what [`Trace::formula`] gives for each, faster.
+    ///
+    /// # Errors
+    /// As [`Trace::formula`].
+    pub fn formulas(&self, es: &[Expr]) -> Result<Vec<Formula>> {
+        self.check_live(es)?;
+        Formula::capture_many(es, &current_names())
     }
 
     /// The conditions the numeric path took on the way (`s - 1/4 > 0`, …), in order.

@@ -5,9 +5,8 @@
 //! same `f64`.
 
 use super::canon::{Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
-use super::expr::{Expr, Func, Node, ARENA};
+use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
-use std::collections::HashMap;
 use std::rc::Rc;
 
 /// A formula copied out of a trace and simplified ([`crate::symbolic`]): evaluate it, print it
@@ -26,28 +25,47 @@ impl Formula {
     /// [`Error::Degenerate`] for a handle of another trace; [`Error::TooLarge`] beyond
     /// [`MAX_FORMULA_SIZE`] or [`MAX_FORMULA_DEPTH`].
     pub(crate) fn capture(e: &Expr, names: &[String]) -> Result<Formula> {
-        let root = ARENA.with(|a| {
+        let mut all = Formula::capture_many(std::slice::from_ref(e), names)?;
+        Ok(all.remove(0))
+    }
+
+    /// The formulas of `roots`, copied out of the running trace in one pass (subexpressions
+    /// they share are simplified once).
+    ///
+    /// # Errors
+    /// As [`Formula::capture`].
+    pub(crate) fn capture_many(roots: &[Expr], names: &[String]) -> Result<Vec<Formula>> {
+        let sums = ARENA.with(|a| {
             let a = a.borrow();
-            if a.generation != e.generation || e.id as usize >= a.nodes.len() {
+            if roots
+                .iter()
+                .any(|e| a.generation != e.generation || e.id as usize >= a.nodes.len())
+            {
                 return Err(Error::Degenerate {
                     what: "symbolic formula",
                     reason: "the expression belongs to a trace that has ended",
                 });
             }
-            // the nodes the root depends on; children always precede parents in the arena
-            let mut reach = vec![e.id];
-            let mut seen = std::collections::HashSet::from([e.id]);
+            // the nodes the roots depend on; children always precede parents in the arena
+            let mut reach: Vec<u32> = Vec::new();
+            let mut seen: FastMap<u32, ()> = FastMap::default();
+            for e in roots {
+                if seen.insert(e.id, ()).is_none() {
+                    reach.push(e.id);
+                }
+            }
             let mut k = 0;
             while k < reach.len() {
                 for c in children(&a.nodes[reach[k] as usize]).into_iter().flatten() {
-                    if seen.insert(c) {
+                    if seen.insert(c, ()).is_none() {
                         reach.push(c);
                     }
                 }
                 k += 1;
             }
             reach.sort_unstable();
-            let mut done: HashMap<u32, Sum> = HashMap::with_capacity(reach.len());
+            let mut done: FastMap<u32, Sum> = FastMap::default();
+            done.reserve(reach.len());
             for id in reach {
                 let s = |k: u32| &done[&k];
                 let sum = match a.nodes[id as usize] {
@@ -70,12 +88,18 @@ impl Formula {
                 check(&sum)?;
                 done.insert(id, sum);
             }
-            Ok(done.remove(&e.id).unwrap_or_default())
+            Ok(roots
+                .iter()
+                .map(|e| done.get(&e.id).cloned().unwrap_or_default())
+                .collect::<Vec<Sum>>())
         })?;
-        Ok(Formula {
-            root,
-            names: names.to_vec(),
-        })
+        Ok(sums
+            .into_iter()
+            .map(|root| Formula {
+                root,
+                names: names.to_vec(),
+            })
+            .collect())
     }
 
     /// The number of nodes written out as a tree.
