@@ -26,7 +26,7 @@ use std::rc::Rc;
 /// counted each time they occur), the bound that keeps printing and evaluation finite.
 pub const MAX_FORMULA_SIZE: usize = 1 << 20;
 
-/// The most terms [`Sum::expanded`] produces (a typed error beyond: multiplying out is
+/// The most terms [`crate::symbolic::Formula::expanded`] produces (a typed error beyond: multiplying out is
 /// refused, not attempted).
 pub const MAX_EXPANDED_TERMS: usize = 1 << 14;
 
