@@ -225,7 +225,8 @@ impl Formula {
     }
 }
 
-fn escape(text: &str) -> String {
+/// Text for HTML and MathML: `&`, `<`, `>` escaped.
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")

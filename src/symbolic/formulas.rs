@@ -118,7 +118,8 @@ pub fn surface_formulas<S: ParametricSurface + ?Sized>(
     s: f64,
     t: f64,
 ) -> Result<SurfaceFormulas> {
-    finite("trace point", &[s, t])?;
+    crate::error::finite("trace point s", s)?;
+    crate::error::finite("trace point t", t)?;
     let traced = trace([("s", s), ("t", t)], |[sv, tv]| {
         let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
         let x = surface.eval(
@@ -213,7 +214,7 @@ pub fn curve_formulas<const N: usize, C: ParametricCurve<N> + ?Sized>(
     curve: &C,
     t: f64,
 ) -> Result<CurveFormulas> {
-    finite("trace point", &[t])?;
+    crate::error::finite("trace point", t)?;
     let traced = trace([("t", t)], |[tv]| {
         let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
         let c = curve.eval(Dual2::new(tv, one, zero));
@@ -324,7 +325,7 @@ impl BasisFormulas {
 /// [`trace`].
 pub fn bspline_basis_formulas(basis: &BSplineBasis, t: f64) -> Result<BasisFormulas> {
     const MAX_DEGREE: usize = 32;
-    finite("trace point", &[t])?;
+    crate::error::finite("trace point", t)?;
     let p = basis.degree();
     if p > MAX_DEGREE {
         return Err(Error::TooLarge {
@@ -432,11 +433,4 @@ fn holds_where(conditions: &[String]) -> Vec<String> {
         "These formulas hold where {}.",
         conditions.join(", ")
     )]
-}
-
-fn finite(what: &'static str, values: &[f64]) -> Result<()> {
-    match values.iter().find(|v| !v.is_finite()) {
-        Some(&value) => Err(Error::NonFinite { what, value }),
-        None => Ok(()),
-    }
 }

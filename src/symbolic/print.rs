@@ -5,6 +5,7 @@
 //! same `f64`.
 
 use super::canon::{Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+use super::display::escape;
 use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
 use std::rc::Rc;
@@ -627,12 +628,6 @@ impl Printer<'_> {
             }
         }
     }
-}
-
-fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 /// The LaTeX command of a function that has one (`\sin`, `\arctan`, `j_0`).
