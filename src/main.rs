@@ -44,6 +44,14 @@ enum Command {
         /// List the workloads and exit.
         #[arg(long)]
         list: bool,
+        /// Run each workload over its sizes (10³ … 10⁷ points and the like), one JSON line
+        /// per size, and draw `fig-bench-scaling` (throughput against size, log-log) into
+        /// `--out`'s figures folder; `--millis` is then per size.
+        #[arg(long)]
+        sweep: bool,
+        /// Output folder of the sweep's figure and its JSON lines.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
     },
 }
 
@@ -67,11 +75,50 @@ fn say(line: impl std::fmt::Display) -> anyhow::Result<()> {
         .context("writing to standard output")
 }
 
+/// `bench --sweep`: every workload of `ids` over its sizes (fixed studies skipped), the JSON
+/// lines printed as they come and written to `out/tables/bench-sweep.jsonl`, and the figure
+/// `fig-bench-scaling` to `out/figures/`.
+fn sweep_all(ids: &[String], budget: Duration, out: &std::path::Path) -> anyhow::Result<()> {
+    let mut all = Vec::new();
+    for id in ids {
+        let results = bench::sweep(id, budget, |r| {
+            say(r.to_json()).map_err(|e| splinelab::report::Error::Io {
+                path: "<stdout>".into(),
+                message: e.to_string(),
+            })
+        })?;
+        all.extend(results);
+    }
+    let tables = out.join("tables");
+    std::fs::create_dir_all(&tables).with_context(|| format!("creating {}", tables.display()))?;
+    let lines: String = all.iter().map(|r| r.to_json() + "\n").collect();
+    let jsonl = tables.join("bench-sweep.jsonl");
+    std::fs::write(&jsonl, lines).with_context(|| format!("writing {}", jsonl.display()))?;
+    say(format_args!("wrote {}", jsonl.display()))?;
+    let machine = format!(
+        "{} threads, {}",
+        std::thread::available_parallelism().map_or(1, |n| n.get()),
+        std::env::consts::ARCH
+    );
+    let figure = bench::scaling_figure(&all, &machine);
+    for path in figure.save(&out.join("figures"), "fig-bench-scaling")? {
+        say(format_args!("wrote {}", path.display()))?;
+    }
+    Ok(())
+}
+
 fn run(cli: Cli) -> anyhow::Result<()> {
-    if let Some(Command::Bench { only, millis, list }) = cli.command {
+    if let Some(Command::Bench {
+        only,
+        millis,
+        list,
+        sweep,
+        out,
+    }) = cli.command
+    {
         if list {
             for w in &bench::WORKLOADS {
-                say(format_args!("{:<20} {}", w.id, w.description))?;
+                say(format_args!("{:<24} {}", w.id, w.description))?;
             }
             return Ok(());
         }
@@ -80,8 +127,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         } else {
             only
         };
+        let budget = Duration::from_millis(millis);
+        if sweep {
+            return sweep_all(&ids, budget, &out);
+        }
         for id in ids {
-            let r = bench::run(&id, Duration::from_millis(millis))?;
+            let r = bench::run(&id, budget)?;
             say(r.to_json())?;
         }
         return Ok(());

@@ -177,44 +177,80 @@ impl<const N: usize> NurbsCurve<N> {
         num * den.recip()
     }
 
-    /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
-    /// [`ParametricCurve::eval`]. As [`crate::BSplineCurve::eval_many`]: for degree ≤ 3 the
-    /// numerator and denominator polynomials of each span are formed once, exactly (Taylor
-    /// coefficients from a third-order dual number), then each point costs two Horner
-    /// evaluations and a division.
+    /// Evaluates at every parameter of `ts` into `out` (replacing its contents), by the same formula as
+    /// [`ParametricCurve::eval`]. As [`crate::BSplineCurve::eval_many`], at any degree: the
+    /// numerator and denominator polynomials of each span are formed once (the Bézier points
+    /// of the homogeneous control points `(wᵢPᵢ, wᵢ)` by blossoming, then their power forms),
+    /// then each point costs two Horner evaluations and a division.
     ///
     /// The power forms are used on a span only where the projection keeps their accuracy:
     /// with `w_min` the smallest (scaled) weight of the span, `Σ wᵢNᵢ ≥ w_min` there, and the
-    /// error of `X / W` is at most `6ε (S_X + ‖P‖ S_W) / w_min` for the sizes `S` of the two
+    /// error of `X / W` is at most `(p + 2)ε (S_X + ‖P‖ S_W) / w_min` for the sizes `S` of the two
     /// power forms (`horner::size`); the span takes the fast path only if
-    /// `S_W ≤ TAYLOR_GROWTH · w_min` (so `W` keeps its relative accuracy and stays positive)
-    /// and `S_X ≤ TAYLOR_GROWTH · w_min · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send their
-    /// spans to point-by-point evaluation as [`ParametricCurve::eval`].
+    /// `S_W ≤ 256 · w_min` (so `W` keeps its relative accuracy and stays positive)
+    /// and `S_X ≤ 256 · w_min · max ‖Pᵢ‖`. Very unequal weights (say `10⁻¹⁵` beside 1) send
+    /// their spans to point-by-point evaluation as [`ParametricCurve::eval`].
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        horner::by_degree!(self.basis.degree(), [N, 1], self.eval_many_with(ts, out))
+    }
+
+    /// [`NurbsCurve::eval_many`] with the numerator's power form stored in `C` and the
+    /// denominator's in `W`.
+    fn eval_many_with<C: horner::Coefficients<N>, W: horner::Coefficients<1>>(
+        &self,
+        ts: &[f64],
+        out: &mut Vec<SVector<f64, N>>,
+    ) {
         let p = self.basis.degree();
         walk_spans(
             &self.basis,
             ts,
             out,
-            |span, t0, width| {
-                let (num, den) = self.homogeneous_on_span(span, horner::seed(t0, width));
-                let (num, den) = (
-                    horner::taylor(&num),
-                    horner::taylor(&SVector::<_, 1>::new(den)),
+            SVector::zeros(),
+            |span, _, _| {
+                if p > horner::MAX_POWER_DEGREE {
+                    return None;
+                }
+                let (mut tmp, mut tmp_w, mut hom, mut hom_w) = (
+                    C::zeros(p + 1),
+                    W::zeros(p + 1),
+                    C::zeros(p + 1),
+                    W::zeros(p + 1),
                 );
-                let scale = horner::max_norm(&self.points[span - p..=span]);
-                let w_min = self.scaled[span - p..=span]
-                    .iter()
-                    .copied()
-                    .fold(f64::INFINITY, f64::min);
+                let (points, weights) =
+                    (&self.points[span - p..=span], &self.scaled[span - p..=span]);
+                for (((h, hw), pt), &w) in hom
+                    .as_mut()
+                    .iter_mut()
+                    .zip(hom_w.as_mut())
+                    .zip(points)
+                    .zip(weights)
+                {
+                    *h = pt * w;
+                    hw.x = w;
+                }
+                let (mut num, mut den) = (C::zeros(p + 1), W::zeros(p + 1));
+                self.basis
+                    .span_bezier(span, hom.as_ref(), tmp.as_mut(), num.as_mut());
+                self.basis
+                    .span_bezier(span, hom_w.as_ref(), tmp_w.as_mut(), den.as_mut());
+                horner::bezier_to_power(num.as_mut());
+                horner::bezier_to_power(den.as_mut());
+                let scale = horner::max_norm(points);
+                let w_min = weights.iter().copied().fold(f64::INFINITY, f64::min);
                 // the denominator keeps its relative accuracy (so it stays positive, whatever
                 // the points), and the numerator its accuracy relative to the points
-                let (s_num, s_den) = (horner::size(&num), horner::size(&den));
+                let (s_num, s_den) = (horner::size(num.as_ref()), horner::size(den.as_ref()));
                 let g = horner::TAYLOR_GROWTH * w_min;
                 (s_den.is_finite() && s_den <= g && s_num.is_finite() && s_num <= g * scale)
                     .then_some((num, den))
             },
-            |(num, den), h| Self::project((horner::eval(num, h), horner::eval(den, h).x)),
+            |(num, den), s| {
+                Self::project((
+                    horner::eval(num.as_ref(), s),
+                    horner::eval(den.as_ref(), s).x,
+                ))
+            },
             |span, t| Self::project(self.homogeneous_on_span(span, t)),
         );
     }

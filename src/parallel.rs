@@ -8,10 +8,7 @@ use std::sync::Mutex;
 
 /// `items.iter().map(f).collect()`, on up to `std::thread::available_parallelism()` threads.
 pub(crate) fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
-    let threads = std::thread::available_parallelism()
-        .map(|n| n.get())
-        .unwrap_or(1)
-        .min(items.len());
+    let threads = cores().min(items.len());
     if threads <= 1 {
         return items.iter().map(f).collect();
     }
@@ -37,6 +34,52 @@ pub(crate) fn map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> 
         .into_iter()
         .map(|r| r.expect("every item is mapped once the scope has joined"))
         .collect()
+}
+
+/// The machine's cores (`std::thread::available_parallelism`, 1 if unknown), asked once:
+/// the question reads cgroup files, tens of microseconds each time.
+pub(crate) fn cores() -> usize {
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+}
+
+/// `(a(), b())`, with `b` on a second thread when `parallel` is set (and the machine lets a
+/// thread be made: otherwise, or if `parallel` is not set, both run here, `a` first). A panic
+/// of `b` is re-raised here.
+pub(crate) fn join<A: Send, B: Send>(
+    parallel: bool,
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    if !(parallel && cores() > 1) {
+        let ra = a();
+        return (ra, b());
+    }
+    // b waits in a cell, so that it can still run here if no thread can be made
+    let cell = Mutex::new(Some(b));
+    std::thread::scope(|scope| {
+        let spawned = std::thread::Builder::new().spawn_scoped(scope, || {
+            let b = cell.lock().ok().and_then(|mut b| b.take());
+            b.map(|b| b())
+        });
+        let ra = a();
+        let rb = match spawned {
+            Ok(handle) => match handle.join() {
+                Ok(rb) => rb,
+                Err(panic) => std::panic::resume_unwind(panic),
+            },
+            Err(_) => None,
+        };
+        let rb = rb.unwrap_or_else(|| {
+            let b = cell
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .take()
+                .expect("b runs once: on the thread, or here when the thread was not made");
+            b()
+        });
+        (ra, rb)
+    })
 }
 
 #[cfg(test)]

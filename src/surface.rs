@@ -421,7 +421,7 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
         }
         ok
     };
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let threads = crate::parallel::cores();
     let all_finite = if threads == 1 || out.len() < PARALLEL_MIN_NODES {
         fill(s_nodes, out)
     } else {

@@ -64,35 +64,56 @@ pub(crate) struct BasisSample {
     pub w: [f64; 4],
 }
 
-/// Tabulates a grid of patches on `rows × cols` samples into `out` (row-major).
+/// Output points from which [`tabulate_pieces`] splits the rows between two threads (below,
+/// a thread costs more than it saves).
+pub(crate) const TABULATE_PARALLEL_MIN: usize = 1 << 16;
+
+/// Tabulates a grid of patches on `rows × cols` samples into `out` (row-major; its former
+/// contents are overwritten, so a reused buffer of the right size is not touched twice).
 ///
 /// `nets[p * n_col_pieces + q]` is the patch of row piece `p` and column piece `q`. For each
 /// row sample the partial sums `Rⱼ = Σᵢ aᵢ Cᵢⱼ` of every column piece are formed once, so each
-/// output point costs four multiply-adds of 3-vectors, `Σⱼ bⱼ Rⱼ`.
+/// output point costs four multiply-adds of 3-vectors, `Σⱼ bⱼ Rⱼ`. From
+/// [`TABULATE_PARALLEL_MIN`] points, with `parallel` set, the rows are split in two halves
+/// computed on two threads — each row by the same arithmetic, so the result is the same.
 pub(crate) fn tabulate_pieces(
     nets: &[Net],
     n_col_pieces: usize,
     rows: &[BasisSample],
     cols: &[BasisSample],
     out: &mut Vec<Vector3<f64>>,
+    parallel: bool,
 ) {
     debug_assert_eq!(nets.len() % n_col_pieces, 0);
-    out.clear();
-    out.reserve(rows.len() * cols.len());
-    let mut partial = vec![[Vector3::<f64>::zeros(); 4]; n_col_pieces];
-    for r in rows {
-        for (q, pr) in partial.iter_mut().enumerate() {
-            let net = &nets[r.piece * n_col_pieces + q];
-            for (j, pj) in pr.iter_mut().enumerate() {
-                *pj = net[0][j] * r.w[0]
-                    + net[1][j] * r.w[1]
-                    + net[2][j] * r.w[2]
-                    + net[3][j] * r.w[3];
+    let width = cols.len();
+    out.resize(rows.len() * width, Vector3::zeros());
+    if width == 0 {
+        return;
+    }
+    let fill = |rows: &[BasisSample], out: &mut [Vector3<f64>]| {
+        let mut partial = vec![[Vector3::<f64>::zeros(); 4]; n_col_pieces];
+        for (r, line) in rows.iter().zip(out.chunks_exact_mut(width)) {
+            for (q, pr) in partial.iter_mut().enumerate() {
+                let net = &nets[r.piece * n_col_pieces + q];
+                for (j, pj) in pr.iter_mut().enumerate() {
+                    *pj = net[0][j] * r.w[0]
+                        + net[1][j] * r.w[1]
+                        + net[2][j] * r.w[2]
+                        + net[3][j] * r.w[3];
+                }
+            }
+            for (o, c) in line.iter_mut().zip(cols) {
+                let p = &partial[c.piece];
+                *o = p[0] * c.w[0] + p[1] * c.w[1] + p[2] * c.w[2] + p[3] * c.w[3];
             }
         }
-        out.extend(cols.iter().map(|c| {
-            let p = &partial[c.piece];
-            p[0] * c.w[0] + p[1] * c.w[1] + p[2] * c.w[2] + p[3] * c.w[3]
-        }));
-    }
+    };
+    let half = rows.len() / 2;
+    let (top_rows, bottom_rows) = rows.split_at(half);
+    let (top, bottom) = out.split_at_mut(half * width);
+    crate::parallel::join(
+        parallel && rows.len() * width >= TABULATE_PARALLEL_MIN,
+        || fill(top_rows, top),
+        || fill(bottom_rows, bottom),
+    );
 }

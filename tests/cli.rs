@@ -97,6 +97,46 @@ fn bench_prints_json_lines() {
 }
 
 #[test]
+fn bench_sweep_prints_sizes_and_draws_the_scaling_figure() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let out = splinelab()
+        .args([
+            "bench",
+            "--sweep",
+            "--only",
+            "patch-matrix",
+            "--millis",
+            "1",
+            "--out",
+        ])
+        .arg(dir.path())
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let json: Vec<&str> = text.lines().filter(|l| l.starts_with('{')).collect();
+    assert_eq!(json.len(), 9, "{text}");
+    for (line, size) in json.iter().zip([4, 8, 15, 32, 64, 128, 256, 512, 1024]) {
+        assert!(line.contains(&format!("\"size\": {size},")), "{line}");
+        assert!(
+            line.contains(&format!("\"points\": {},", size * size)),
+            "{line}"
+        );
+    }
+    let jsonl =
+        std::fs::read_to_string(dir.path().join("tables/bench-sweep.jsonl")).expect("jsonl");
+    assert_eq!(jsonl.lines().count(), 9);
+    for ext in ["png", "svg"] {
+        let f = dir.path().join(format!("figures/fig-bench-scaling.{ext}"));
+        assert!(std::fs::metadata(&f).expect("figure").len() > 1000, "{f:?}");
+    }
+}
+
+#[test]
 fn only_draws_one_figure() {
     let dir = tempfile::tempdir().expect("tempdir");
     regenerate_only("fig2-torus", dir.path());

@@ -1668,7 +1668,7 @@ proptest! {
     /// `BSplineCurve::try_new`, `with_point`: finite on the domain, `eval_many` = `point`,
     /// derivatives finite for moderate data.
     #[test]
-    fn bspline_curve(k in knots(), degree in count(0..=5), pts in points::<2>(0..=20), off in prop::bool::weighted(0.05), fr in fracs(), samples in count(0..=12), idx in any::<Index>(), newp in prop::array::uniform2(num())) {
+    fn bspline_curve(k in knots(), degree in count(0..=9), pts in points::<2>(0..=20), off in prop::bool::weighted(0.05), fr in fracs(), samples in count(0..=12), idx in any::<Index>(), newp in prop::array::uniform2(num())) {
         guard(|| {
             let Ok(kv) = KnotVector::try_new(k) else { return Ok(()) };
             let Ok(basis) = BSplineBasis::try_new(kv, degree) else { return Ok(()) };
@@ -1686,7 +1686,7 @@ proptest! {
     /// `NurbsCurve::try_new`, `with_weight`: finite on the domain, `eval_many` = `point`, equal
     /// weights = the B-spline curve.
     #[test]
-    fn nurbs_curve(k in knots(), degree in count(0..=4), pts in points::<2>(0..=20), w in weights(), equal in prop::bool::weighted(0.25), off in prop::bool::weighted(0.05), fr in fracs(), idx in any::<Index>(), neww in pos()) {
+    fn nurbs_curve(k in knots(), degree in count(0..=8), pts in points::<2>(0..=20), w in weights(), equal in prop::bool::weighted(0.25), off in prop::bool::weighted(0.05), fr in fracs(), idx in any::<Index>(), neww in pos()) {
         guard(|| {
             let Ok(kv) = KnotVector::try_new(k) else { return Ok(()) };
             let Ok(basis) = BSplineBasis::try_new(kv, degree) else { return Ok(()) };

@@ -141,7 +141,14 @@ impl BezierPatch {
         let rows = local_basis_samples(samples("ns", ns)?, bernstein3);
         let cols = local_basis_samples(samples("nt", nt)?, bernstein3);
         let mut out = Vec::new();
-        tabulate_pieces(std::slice::from_ref(&self.m), 1, &rows, &cols, &mut out);
+        tabulate_pieces(
+            std::slice::from_ref(&self.m),
+            1,
+            &rows,
+            &cols,
+            &mut out,
+            true,
+        );
         Ok(Grid::from_vec(ns, nt, out).expect("filled ns × nt"))
     }
 }

@@ -101,7 +101,7 @@ impl SlidingBicubic {
             .collect();
         let mut out = Vec::new();
         let net = self.nets[cell.0 * self.cells.1 + cell.1];
-        tabulate_pieces(&[net], 1, &rows, &rows, &mut out);
+        tabulate_pieces(&[net], 1, &rows, &rows, &mut out, true);
         Ok(Grid::from_vec(n, n, out).expect("tabulate_pieces fills n × n"))
     }
 }

@@ -3,6 +3,7 @@
 
 use crate::bspline::knots::KnotVector;
 use crate::error::{Error, Result};
+use nalgebra::SVector;
 use num_dual::DualNum;
 
 /// The normalised B-spline basis `{N_{i,p}}`, `i = 0 … n`, of degree `p` (order `m = p + 1`) on a
@@ -146,6 +147,67 @@ impl BSplineBasis {
             lo: k[span],
             hi: k[span + 1],
             closed: k[span + 1] >= self.domain().1,
+        }
+    }
+
+    /// The Bézier points `b₀ … b_p` (into `out`) of the piece on span `ℓ = span` of the curve
+    /// whose control points on the span are `points = P_{ℓ−p} … P_ℓ`: on `[t_ℓ, t_{ℓ+1}]`,
+    /// `Σᵢ Pᵢ N_{i,p}(t) = Σₖ bₖ Bₖᵖ(s)`, `s = (t − t_ℓ)/(t_{ℓ+1} − t_ℓ)`.
+    ///
+    /// By blossoming (Ramshaw; Farin, *Curves and Surfaces for CAGD*, ch. 8):
+    /// `bₖ = B(t_ℓ, …, t_ℓ, t_{ℓ+1}, …, t_{ℓ+1})` with `p − k` arguments `t_ℓ` and `k` arguments
+    /// `t_{ℓ+1}`, each blossom value by de Boor's triangle with the argument `u_r` at level `r`:
+    /// `d_j ← (1 − α) d_{j−1} + α d_j`, `α = (u_r − t_J)/(t_{J+p+1−r} − t_J)`, `J = ℓ − p + j`.
+    /// Every interval `[t_J, t_{J+p+1−r}]` contains the span, so the denominators are at least
+    /// its width and every `α` is in `[0, 1]`: the Bézier points are convex combinations of
+    /// the control points, accurate however close the knots. `O(p³)` per span; `tmp` holds the
+    /// triangle (`p + 1` entries, like `points` and `out`).
+    pub(crate) fn span_bezier<const N: usize>(
+        &self,
+        span: usize,
+        points: &[SVector<f64, N>],
+        tmp: &mut [SVector<f64, N>],
+        out: &mut [SVector<f64, N>],
+    ) {
+        let p = self.degree;
+        let k = self.knots.knots();
+        let (a, b) = (k[span], k[span + 1]);
+        // the level-r weights of node j at the two arguments, α = (u − t_J)/(t_{J+p+1−r} − t_J),
+        // formed once (p(p+1)/2 divisions) for the p + 1 blossom values, in the triangle's
+        // order (by level, nodes from the top down), as (α at t_ℓ, α at t_{ℓ+1}); on the stack
+        // up to degree 8
+        let mut weights = [(0.0, 0.0); 36];
+        let mut owned = Vec::new();
+        let count = p * (p + 1) / 2;
+        let alphas: &mut [(f64, f64)] = if count <= weights.len() {
+            &mut weights[..count]
+        } else {
+            owned.resize(count, (0.0, 0.0));
+            &mut owned
+        };
+        let mut slot = 0;
+        for r in 1..=p {
+            for j in (r..=p).rev() {
+                let lo = k[span - p + j];
+                let inv = 1.0 / (k[span + j + 1 - r] - lo);
+                alphas[slot] = ((a - lo) * inv, (b - lo) * inv);
+                slot += 1;
+            }
+        }
+        for (i, o) in out.iter_mut().enumerate() {
+            tmp.copy_from_slice(points);
+            let mut slot = 0;
+            for r in 1..=p {
+                let at_a = r <= p - i;
+                // the level's nodes from the top down, as the triangle needs: j = p … r
+                for j in (r..=p).rev() {
+                    let (alpha_a, alpha_b) = alphas[slot];
+                    let alpha = if at_a { alpha_a } else { alpha_b };
+                    slot += 1;
+                    tmp[j] = tmp[j - 1] * (1.0 - alpha) + tmp[j] * alpha;
+                }
+            }
+            *o = tmp[p];
         }
     }
 

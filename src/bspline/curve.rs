@@ -101,30 +101,54 @@ impl<const N: usize> BSplineCurve<N> {
         self.combine(span, &n)
     }
 
-    /// Evaluates at every parameter of `ts` into `out` (cleared first), by the same formula as
+    /// Evaluates at every parameter of `ts` into `out` (replacing its contents), by the same formula as
     /// [`ParametricCurve::eval`]. The span search starts from the previous span, so sorted
-    /// parameters cost a comparison or two each. For degree ≤ 3 each span's polynomial is
-    /// formed once, exactly, from one evaluation at the third-order dual number `t_ℓ + w ε`
-    /// (its Taylor coefficients), and every point then costs one Horner evaluation; higher
-    /// degrees evaluate the basis at every point.
+    /// parameters cost a comparison or two each. Each span's polynomial is formed once, at any
+    /// degree: its Bézier points by blossoming (`BSplineBasis::span_bezier`, convex
+    /// combinations of the control points), then its power form in the scaled variable
+    /// `s = (t − t_ℓ)/w` of the span (`w` its width) by forward differences; every point then
+    /// costs `p` multiply-adds per coordinate (Horner's rule in `s²` on pairs of
+    /// coefficients; up to degree 7 the loop is unrolled at compile time). From 65 536 parameters the two halves of `ts` are
+    /// evaluated on two threads (a span's power form depends on the span alone, so the values
+    /// are the same on one core or two).
     ///
-    /// The power form is taken in the scaled variable `s = (t − t_ℓ)/w` of each span (`w` its
-    /// width), so its coefficients are of the size of the control points however narrow or
-    /// wide the span, and it is used only where it is as accurate as the basis form: finite
-    /// coefficients with `Σₖ ‖c̃ₖ‖ ≤ TAYLOR_GROWTH · max ‖Pᵢ‖` (see `horner::safe`);
-    /// elsewhere the span is evaluated point by point as [`ParametricCurve::eval`] does.
+    /// In the scaled variable the coefficients are of the size of the control points however
+    /// narrow or wide the span, and the power form is used only where it is as accurate as the
+    /// basis form: finite coefficients with `Σₖ ‖c̃ₖ‖ ≤ 256 · max ‖Pᵢ‖` over the span's control
+    /// points (the evaluation's error is then at most `(p + 2) · 256 ε · max ‖Pᵢ‖`,
+    /// `1.4e-13 · max ‖Pᵢ‖` at degree 3, `2.6e-13` at degree 7); elsewhere (wild control points at high degree,
+    /// overflowing coefficients) the span is evaluated point by point as
+    /// [`ParametricCurve::eval`] does. Above degree 32 no power form is made (see
+    /// `horner::MAX_POWER_DEGREE`). A span's form is made each time the parameters enter it,
+    /// so unsorted parameters at a high degree cost a form per point (sort them first).
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
+        horner::by_degree!(self.basis.degree(), [N], self.eval_many_with(ts, out))
+    }
+
+    /// [`BSplineCurve::eval_many`] with the power forms stored in `C`.
+    fn eval_many_with<C: horner::Coefficients<N>>(
+        &self,
+        ts: &[f64],
+        out: &mut Vec<SVector<f64, N>>,
+    ) {
         let p = self.basis.degree();
         walk_spans(
             &self.basis,
             ts,
             out,
-            |span, t0, width| {
-                let c = horner::taylor(&self.eval_on_span(span, horner::seed(t0, width)));
-                let scale = horner::max_norm(&self.points[span - p..=span]);
-                horner::safe(&c, scale).then_some(c)
+            SVector::zeros(),
+            |span, _, _| {
+                if p > horner::MAX_POWER_DEGREE {
+                    return None;
+                }
+                let points = &self.points[span - p..=span];
+                let (mut tmp, mut c) = (C::zeros(p + 1), C::zeros(p + 1));
+                self.basis
+                    .span_bezier(span, points, tmp.as_mut(), c.as_mut());
+                horner::bezier_to_power(c.as_mut());
+                horner::safe(c.as_ref(), horner::max_norm(points)).then_some(c)
             },
-            horner::eval,
+            |c, s| horner::eval(c.as_ref(), s),
             |span, t| self.eval_on_span(span, t),
         );
     }
@@ -147,49 +171,80 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
     }
 }
 
+/// Parameters from which [`walk_spans`] splits a batch between two threads (below, a thread
+/// costs more than it saves).
+pub(crate) const EVAL_PARALLEL_MIN: usize = 1 << 16;
+
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
-/// into `out` (cleared first): for degree ≤ 3, `piece(ℓ, t_ℓ, w)` forms span `ℓ`'s data once
-/// (`w` the span's width), and `at(piece, (t − t_ℓ)/w)` evaluates each point; where `piece`
-/// declines (`None`: its fast form would lose accuracy) and above degree 3, `direct(ℓ, t)`
-/// evaluates each point.
-pub(crate) fn walk_spans<T, P>(
+/// into `out` (resized to `ts.len()`, former contents overwritten; `zero` fills new slots
+/// before they are written): `piece(ℓ, t_ℓ, w)` forms span `ℓ`'s data once per run of
+/// parameters in it (`w` the span's width), and `at(piece, (t − t_ℓ)/w)` evaluates each
+/// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
+/// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters the two halves of `ts` are
+/// walked on two threads; a span's data depend on the span alone, so the values are the
+/// same whatever the split.
+pub(crate) fn walk_spans<T: Copy + Send, P>(
     basis: &BSplineBasis,
     ts: &[f64],
     out: &mut Vec<T>,
-    piece: impl Fn(usize, f64, f64) -> Option<P>,
-    at: impl Fn(&P, f64) -> T,
-    direct: impl Fn(usize, f64) -> T,
+    zero: T,
+    piece: impl Fn(usize, f64, f64) -> Option<P> + Sync,
+    at: impl Fn(&P, f64) -> T + Sync,
+    direct: impl Fn(usize, f64) -> T + Sync,
 ) {
-    out.clear();
-    out.reserve(ts.len());
+    out.truncate(ts.len());
+    out.resize(ts.len(), zero);
+    let half = ts.len() / 2;
+    let (first, second) = ts.split_at(half);
+    let (out_first, out_second) = out.split_at_mut(half);
+    let walk = |ts: &[f64], out: &mut [T]| walk_part(basis, ts, out, &piece, &at, &direct);
+    crate::parallel::join(
+        ts.len() >= EVAL_PARALLEL_MIN,
+        || walk(first, out_first),
+        || walk(second, out_second),
+    );
+}
+
+/// [`walk_spans`] on one thread, writing `out[i]` for `ts[i]`.
+fn walk_part<T, P>(
+    basis: &BSplineBasis,
+    ts: &[f64],
+    out: &mut [T],
+    piece: &impl Fn(usize, f64, f64) -> Option<P>,
+    at: &impl Fn(&P, f64) -> T,
+    direct: &impl Fn(usize, f64) -> T,
+) {
     let mut cursor = SpanCursor::new(basis);
-    if basis.degree() <= horner::TAYLOR_DEGREE {
-        let form = |c: &SpanCursor| piece(c.span(), c.start(), c.width());
-        let mut data = form(&cursor);
-        let mut i = 0;
-        while i < ts.len() {
-            if cursor.advance(ts[i]) {
-                data = form(&cursor);
-            }
-            // the run of parameters that stay in this span (at least ts[i], which may be the
-            // right end b or outside the domain), evaluated in one branch-free loop
-            let (lo, hi, inv) = (cursor.start(), cursor.hi, cursor.inv_width);
-            let run = 1 + ts[i + 1..]
-                .iter()
-                .position(|&t| !(lo <= t && t < hi))
-                .unwrap_or(ts.len() - i - 1);
-            let chunk = &ts[i..i + run];
-            match &data {
-                Some(d) => out.extend(chunk.iter().map(|&t| at(d, (t - lo) * inv))),
-                None => out.extend(chunk.iter().map(|&t| fallback(&direct, cursor.span(), t))),
-            }
-            i += run;
+    let form = |c: &SpanCursor| piece(c.span(), c.start(), c.width());
+    let mut data = None;
+    let mut formed = false;
+    let mut i = 0;
+    while i < ts.len() {
+        if cursor.advance(ts[i]) || !formed {
+            data = form(&cursor);
+            formed = true;
         }
-    } else {
-        out.extend(ts.iter().map(|&t| {
-            cursor.advance(t);
-            direct(cursor.span(), t)
-        }));
+        // the run of parameters that stay in this span (at least ts[i], which may be the
+        // right end b or outside the domain), evaluated in one branch-free loop
+        let (lo, hi, inv) = (cursor.start(), cursor.hi, cursor.inv_width);
+        let run = 1 + ts[i + 1..]
+            .iter()
+            .position(|&t| !(lo <= t && t < hi))
+            .unwrap_or(ts.len() - i - 1);
+        let (chunk, slots) = (&ts[i..i + run], &mut out[i..i + run]);
+        match &data {
+            Some(d) => {
+                for (o, &t) in slots.iter_mut().zip(chunk) {
+                    *o = at(d, (t - lo) * inv);
+                }
+            }
+            None => {
+                for (o, &t) in slots.iter_mut().zip(chunk) {
+                    *o = fallback(direct, cursor.span(), t);
+                }
+            }
+        }
+        i += run;
     }
 }
 

@@ -158,7 +158,14 @@ impl HermitePatch {
         let rows = local_basis_samples(samples("ns", ns)?, hermite_basis);
         let cols = local_basis_samples(samples("nt", nt)?, hermite_basis);
         let mut out = Vec::new();
-        tabulate_pieces(std::slice::from_ref(&self.c), 1, &rows, &cols, &mut out);
+        tabulate_pieces(
+            std::slice::from_ref(&self.c),
+            1,
+            &rows,
+            &cols,
+            &mut out,
+            true,
+        );
         Ok(Grid::from_vec(ns, nt, out).expect("tabulate_pieces fills rows × cols"))
     }
 }

