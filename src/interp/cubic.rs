@@ -150,6 +150,12 @@ impl<const N: usize> CubicSpline<N> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn refit(self, x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
+        self.rebuild(x, |ys| ys.extend_from_slice(y))
+    }
+
+    /// The refit of `self` through `x` and the values `fill` writes into its emptied value
+    /// buffer.
+    fn rebuild(self, x: &[f64], fill: impl FnOnce(&mut Vec<SVector<f64, N>>)) -> Result<Self> {
         let Self {
             x: xs,
             y: mut ys,
@@ -157,7 +163,7 @@ impl<const N: usize> CubicSpline<N> {
             end,
         } = self;
         ys.clear();
-        ys.extend_from_slice(y);
+        fill(&mut ys);
         Self::build(x, ys, end, xs, m)
     }
 
@@ -372,15 +378,7 @@ impl CubicSpline<1> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn refit_function(self, x: &[f64], y: &[f64]) -> Result<Self> {
-        let Self {
-            x: xs,
-            y: mut ys,
-            m,
-            end,
-        } = self;
-        ys.clear();
-        ys.extend(y.iter().map(|&v| Vector1::new(v)));
-        Self::build(x, ys, end, xs, m)
+        self.rebuild(x, |ys| ys.extend(y.iter().map(|&v| Vector1::new(v))))
     }
 
     /// `s(x)`.
