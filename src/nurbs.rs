@@ -207,7 +207,7 @@ impl<const N: usize> NurbsCurve<N> {
             ts,
             out,
             SVector::zeros(),
-            |span, _, _| {
+            |span| {
                 if p > horner::MAX_POWER_DEGREE {
                     return None;
                 }

@@ -43,6 +43,29 @@ pub(crate) fn cores() -> usize {
     *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
 }
 
+/// Resizes `out` to `inputs.len()` (new slots `zero`, the rest overwritten) and fills it by
+/// `fill(part, out_part)` on the two halves of `inputs`, on two threads when `parallel` is
+/// set: the batch shape of the curve and spline evaluators, whose values depend on each input
+/// alone, so the result does not depend on the split.
+pub(crate) fn fill_halves<T: Copy + Send>(
+    inputs: &[f64],
+    out: &mut Vec<T>,
+    zero: T,
+    parallel: bool,
+    fill: impl Fn(&[f64], &mut [T]) + Sync,
+) {
+    out.truncate(inputs.len());
+    out.resize(inputs.len(), zero);
+    let half = inputs.len() / 2;
+    let (first, second) = inputs.split_at(half);
+    let (out_first, out_second) = out.split_at_mut(half);
+    join(
+        parallel,
+        || fill(first, out_first),
+        || fill(second, out_second),
+    );
+}
+
 /// `(a(), b())`, with `b` on a second thread when `parallel` is set (and the machine lets a
 /// thread be made: otherwise, or if `parallel` is not set, both run here, `a` first). A panic
 /// of `b` is re-raised here.

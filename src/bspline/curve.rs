@@ -137,7 +137,7 @@ impl<const N: usize> BSplineCurve<N> {
             ts,
             out,
             SVector::zeros(),
-            |span, _, _| {
+            |span| {
                 if p > horner::MAX_POWER_DEGREE {
                     return None;
                 }
@@ -177,8 +177,8 @@ pub(crate) const EVAL_PARALLEL_MIN: usize = 1 << 16;
 
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
 /// into `out` (resized to `ts.len()`, former contents overwritten; `zero` fills new slots
-/// before they are written): `piece(ℓ, t_ℓ, w)` forms span `ℓ`'s data once per run of
-/// parameters in it (`w` the span's width), and `at(piece, (t − t_ℓ)/w)` evaluates each
+/// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of
+/// parameters in it, and `at(piece, (t − t_ℓ)/w)` evaluates each
 /// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
 /// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters the two halves of `ts` are
 /// walked on two threads; a span's data depend on the span alone, so the values are the
@@ -188,21 +188,13 @@ pub(crate) fn walk_spans<T: Copy + Send, P>(
     ts: &[f64],
     out: &mut Vec<T>,
     zero: T,
-    piece: impl Fn(usize, f64, f64) -> Option<P> + Sync,
+    piece: impl Fn(usize) -> Option<P> + Sync,
     at: impl Fn(&P, f64) -> T + Sync,
     direct: impl Fn(usize, f64) -> T + Sync,
 ) {
-    out.truncate(ts.len());
-    out.resize(ts.len(), zero);
-    let half = ts.len() / 2;
-    let (first, second) = ts.split_at(half);
-    let (out_first, out_second) = out.split_at_mut(half);
-    let walk = |ts: &[f64], out: &mut [T]| walk_part(basis, ts, out, &piece, &at, &direct);
-    crate::parallel::join(
-        ts.len() >= EVAL_PARALLEL_MIN,
-        || walk(first, out_first),
-        || walk(second, out_second),
-    );
+    crate::parallel::fill_halves(ts, out, zero, ts.len() >= EVAL_PARALLEL_MIN, |ts, out| {
+        walk_part(basis, ts, out, &piece, &at, &direct)
+    });
 }
 
 /// [`walk_spans`] on one thread, writing `out[i]` for `ts[i]`.
@@ -210,18 +202,17 @@ fn walk_part<T, P>(
     basis: &BSplineBasis,
     ts: &[f64],
     out: &mut [T],
-    piece: &impl Fn(usize, f64, f64) -> Option<P>,
+    piece: &impl Fn(usize) -> Option<P>,
     at: &impl Fn(&P, f64) -> T,
     direct: &impl Fn(usize, f64) -> T,
 ) {
     let mut cursor = SpanCursor::new(basis);
-    let form = |c: &SpanCursor| piece(c.span(), c.start(), c.width());
     let mut data = None;
     let mut formed = false;
     let mut i = 0;
     while i < ts.len() {
         if cursor.advance(ts[i]) || !formed {
-            data = form(&cursor);
+            data = piece(cursor.span());
             formed = true;
         }
         // the run of parameters that stay in this span (at least ts[i], which may be the
@@ -296,11 +287,6 @@ impl<'a> SpanCursor<'a> {
     /// The knot `t_ℓ` where the current span starts.
     fn start(&self) -> f64 {
         self.lo
-    }
-
-    /// The width `t_{ℓ+1} − t_ℓ` of the current span.
-    fn width(&self) -> f64 {
-        self.hi - self.lo
     }
 
     /// Moves to the span of `t` (as [`BSplineBasis::find_span`]); `true` if it changed.

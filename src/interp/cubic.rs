@@ -301,11 +301,6 @@ impl<const N: usize> CubicSpline<N> {
         zero: T,
         map: impl Fn(SVector<f64, N>) -> T + Sync,
     ) {
-        out.truncate(xs.len());
-        out.resize(xs.len(), zero);
-        let half = xs.len() / 2;
-        let (first, second) = xs.split_at(half);
-        let (out_first, out_second) = out.split_at_mut(half);
         let fill = |xs: &[f64], out: &mut [T]| {
             let mut cursor = IntervalCursor::new(&self.x);
             let mut k = 0;
@@ -325,11 +320,8 @@ impl<const N: usize> CubicSpline<N> {
                 k += run;
             }
         };
-        crate::parallel::join(
-            xs.len() >= crate::bspline::curve::EVAL_PARALLEL_MIN,
-            || fill(first, out_first),
-            || fill(second, out_second),
-        );
+        let parallel = xs.len() >= crate::bspline::curve::EVAL_PARALLEL_MIN;
+        crate::parallel::fill_halves(xs, out, zero, parallel, fill);
     }
 
     /// Evaluates at every `x` of `xs` into `out` (resized to `xs.len()`, former contents
