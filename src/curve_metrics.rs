@@ -199,25 +199,38 @@ impl SegmentTree {
         let u = unit_for(self.extent.max(p.amax()));
         let k = 1.0 / u;
         let stop = (stop * k) * (stop * k);
+        // A segment's computed distance can fall below its box's distance by the rounding of
+        // the foot of the perpendicular `a + t(b − a)`: a few ulps of the largest coordinate,
+        // not of the distance (a long segment seen from a point near it: 5√2 ε of the
+        // coordinates at most, taken as 16 ε). The relative slack covers the rest (the
+        // subtraction and the squares).
+        let reach = 16.0 * f64::EPSILON * (self.extent.max(p.amax()) * k);
         let mut best = f64::INFINITY;
+        // boxes farther than this are skipped: (√best (1 + slack) + reach)²
+        let mut limit = f64::INFINITY;
         // depth ≤ log₂(segments) + 1 < 64 for any size below MAX_ELEMENTS
         let mut stack = [0u32; 64];
         let mut top = 1;
         while top > 0 {
             top -= 1;
             let node = self.nodes[stack[top] as usize];
-            // a box farther than the best so far cannot hold a nearer segment; the slack
-            // covers the rounding of the segment formula (a few ulps), so every segment whose
-            // computed distance could tie or beat `best` is visited and the minimum is the
-            // brute-force one exactly
-            if node.distance2(p, k) > best * (1.0 + PRUNE_SLACK) {
+            // a box farther than the best so far cannot hold a nearer segment; `limit` covers
+            // the rounding of the segment formula, so every segment whose computed distance
+            // could tie or beat `best` is visited and the minimum is the brute-force one
+            // exactly
+            if node.distance2(p, k) > limit {
                 continue;
             }
             if node.count > 0 {
                 let first = node.first as usize;
                 for &i in &self.order[first..first + node.count as usize] {
                     let i = i as usize;
-                    best = best.min(scaled_distance2(p, self.points[i], self.points[i + 1], k));
+                    let d = scaled_distance2(p, self.points[i], self.points[i + 1], k);
+                    if d < best {
+                        best = d;
+                        let r = best.sqrt() * (1.0 + PRUNE_SLACK) + reach;
+                        limit = r * r;
+                    }
                 }
                 if best < stop {
                     return best.sqrt() * u;

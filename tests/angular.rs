@@ -729,3 +729,27 @@ fn the_fast_polyline_is_the_reference_polyline() {
         Err(Error::TooFewSamples { .. })
     ));
 }
+
+/// A tangent within `COLLINEAR_SIN` of pointing straight back along its piece's chord (two
+/// points one ulp apart make it: found by the random-input tests): the part of the piece it
+/// ends is the straight chord (spec decision A2, the limit as `φ → π`), finite, with `C″ = 0`,
+/// and the curve still interpolates both ends.
+#[test]
+fn a_backward_tangent_makes_a_straight_part() {
+    let pts = vec![
+        v(4.741584615680437, -1.2599735463917355e-7),
+        v(4.741584615680438, -1.2599735463917352e-7),
+        v(-5.9108354940683325, -4.5450206265420734e-7),
+        v(-141601.26756183736, -3.7291867506211367),
+    ];
+    let c = AngularSpline::try_new(pts.clone()).unwrap();
+    let t0 = c.tangents()[0];
+    let chord = (pts[2] - pts[1]).normalize();
+    assert!(t0.dot(&chord) < 0.0 && t0.perp(&chord).abs() <= 2.0 * COLLINEAR_SIN);
+    let e = c.eval_piece(0, num_dual::Dual2_64::from_re(0.0).derivative());
+    assert_eq!(e.map(|x| x.v2), V::zeros(), "the first part is straight");
+    let d = e.map(|x| x.v1);
+    assert!(d.dot(&chord) > 0.0 && d.perp(&chord).abs() <= 1e-12 * d.norm());
+    assert_eq!(c.point(0.0), pts[1]);
+    assert!((c.point(1.0) - pts[2]).amax() <= 1e-15 * 6.0);
+}

@@ -114,6 +114,34 @@ fn the_tree_equals_brute_force_on_awkward_polylines() {
 }
 
 #[test]
+fn long_segments_near_the_query_are_not_pruned() {
+    // A segment 3·10⁵ long passing 0.74 from the query: its computed distance carries the
+    // rounding of the foot of the perpendicular (ulps of 10⁵, 10⁻¹⁰ of the distance), below
+    // its box's distance; the tree's pruning must still visit it, so that its minimum is the
+    // brute-force one exactly (found by the random-input tests in CI).
+    let line = [
+        V::new(0.0, 0.0),
+        V::new(0.0, 0.0),
+        V::new(469344.0804474658, 0.0),
+        V::new(-4.4939975281473465, 0.0),
+        V::new(-4.4939975281473465, 0.0),
+        V::new(-5.77973837694964, -329246.1530427028),
+    ];
+    let tree = SegmentTree::new(&line).unwrap();
+    let mut rng = Rng::new(11);
+    let queries = [V::new(-5.2366494299894955, 0.0)]
+        .into_iter()
+        .chain((0..2000).map(|_| V::new(rng.uniform(-6.0, -4.0), rng.uniform(-3e5, 1.0))));
+    for q in queries {
+        let brute = line
+            .windows(2)
+            .map(|w| segment_distance(q, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert_eq!(tree.distance(q), brute, "at {q:?}");
+    }
+}
+
+#[test]
 fn coordinates_near_the_limit_do_not_overflow() {
     // squares of 1e300 overflow; the tree scales by a power of two and agrees with brute
     // force on the same data scaled down

@@ -157,7 +157,8 @@ impl BSplineBasis {
     /// By blossoming (Ramshaw; Farin, *Curves and Surfaces for CAGD*, ch. 8):
     /// `bₖ = B(t_ℓ, …, t_ℓ, t_{ℓ+1}, …, t_{ℓ+1})` with `p − k` arguments `t_ℓ` and `k` arguments
     /// `t_{ℓ+1}`, each blossom value by de Boor's triangle with the argument `u_r` at level `r`:
-    /// `d_j ← (1 − α) d_{j−1} + α d_j`, `α = (u_r − t_J)/(t_{J+p+1−r} − t_J)`, `J = ℓ − p + j`.
+    /// `d_j ← (1 − α) d_{j−1} + α d_j`, `α = (u_r − t_J)/(t_{J+p+1−r} − t_J)`, `J = ℓ − p + j`
+    /// (`1 − α` as `(t_{J+p+1−r} − u_r)/(t_{J+p+1−r} − t_J)`).
     /// Every interval `[t_J, t_{J+p+1−r}]` contains the span, so the denominators are at least
     /// its width and every `α` is in `[0, 1]`: the Bézier points are convex combinations of
     /// the control points, accurate however close the knots. `O(p³)` per span; `tmp` holds the
@@ -172,25 +173,31 @@ impl BSplineBasis {
         let p = self.degree;
         let k = self.knots.knots();
         let (a, b) = (k[span], k[span + 1]);
-        // the level-r weights of node j at the two arguments, α = (u − t_J)/(t_{J+p+1−r} − t_J),
-        // formed once (p(p+1)/2 divisions) for the p + 1 blossom values, in the triangle's
-        // order (by level, nodes from the top down), as (α at t_ℓ, α at t_{ℓ+1}); on the stack
-        // up to degree 8
-        let mut weights = [(0.0, 0.0); 36];
+        // the level-r weights of node j at the two arguments, (1 − α, α) with
+        // α = (u − t_J)/(t_{J+p+1−r} − t_J), formed once (p(p+1)/2 divisions) for the p + 1
+        // blossom values, in the triangle's order (by level, nodes from the top down), as
+        // [at t_ℓ, at t_{ℓ+1}]; on the stack up to degree 8. Both weights come from the
+        // distances to the interval's ends (as in the basis recurrence), not 1 − α from α:
+        // when α is within ulps of 1 the small weight keeps its relative accuracy, which
+        // matters where it multiplies a large weight of a NURBS curve.
+        let mut weights = [[(0.0, 0.0); 2]; 36];
         let mut owned = Vec::new();
         let count = p * (p + 1) / 2;
-        let alphas: &mut [(f64, f64)] = if count <= weights.len() {
+        let alphas: &mut [[(f64, f64); 2]] = if count <= weights.len() {
             &mut weights[..count]
         } else {
-            owned.resize(count, (0.0, 0.0));
+            owned.resize(count, [(0.0, 0.0); 2]);
             &mut owned
         };
         let mut slot = 0;
         for r in 1..=p {
             for j in (r..=p).rev() {
-                let lo = k[span - p + j];
-                let inv = 1.0 / (k[span + j + 1 - r] - lo);
-                alphas[slot] = ((a - lo) * inv, (b - lo) * inv);
+                let (lo, hi) = (k[span - p + j], k[span + j + 1 - r]);
+                let inv = 1.0 / (hi - lo);
+                alphas[slot] = [
+                    ((hi - a) * inv, (a - lo) * inv),
+                    ((hi - b) * inv, (b - lo) * inv),
+                ];
                 slot += 1;
             }
         }
@@ -198,13 +205,12 @@ impl BSplineBasis {
             tmp.copy_from_slice(points);
             let mut slot = 0;
             for r in 1..=p {
-                let at_a = r <= p - i;
+                let at = usize::from(r > p - i);
                 // the level's nodes from the top down, as the triangle needs: j = p … r
                 for j in (r..=p).rev() {
-                    let (alpha_a, alpha_b) = alphas[slot];
-                    let alpha = if at_a { alpha_a } else { alpha_b };
+                    let (beta, alpha) = alphas[slot][at];
                     slot += 1;
-                    tmp[j] = tmp[j - 1] * (1.0 - alpha) + tmp[j] * alpha;
+                    tmp[j] = tmp[j - 1] * beta + tmp[j] * alpha;
                 }
             }
             *o = tmp[p];
