@@ -196,7 +196,8 @@ impl SegmentTree {
     /// The distance from `p` to the polyline, except that the search may stop and return
     /// any distance below `stop` as soon as it finds one.
     fn nearest(&self, p: Vector2<f64>, stop: f64) -> f64 {
-        let u = unit_for(self.extent.max(p.amax()));
+        let size = self.extent.max(p.amax());
+        let u = unit_for(size);
         let k = 1.0 / u;
         let stop = (stop * k) * (stop * k);
         // A segment's computed distance can fall below its box's distance by the rounding of
@@ -204,7 +205,7 @@ impl SegmentTree {
         // not of the distance (a long segment seen from a point near it: 5√2 ε of the
         // coordinates at most, taken as 16 ε). The relative slack covers the rest (the
         // subtraction and the squares).
-        let reach = 16.0 * f64::EPSILON * (self.extent.max(p.amax()) * k);
+        let reach = 16.0 * f64::EPSILON * (size * k);
         let mut best = f64::INFINITY;
         // boxes farther than this are skipped: (√best (1 + slack) + reach)²
         let mut limit = f64::INFINITY;

@@ -58,6 +58,7 @@ pub mod grid;
 pub mod hermite;
 mod horner;
 pub mod interp;
+mod memory;
 pub mod metrics;
 pub mod nurbs;
 mod parallel;

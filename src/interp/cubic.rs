@@ -129,7 +129,9 @@ impl<const N: usize> CubicSpline<N> {
     /// reproduces the data exactly, and the moment system is strictly diagonally dominant,
     /// so its solve is stable whatever the mesh.)
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>], end: EndCondition<N>) -> Result<Self> {
-        Self::build(x, y.to_vec(), end, Vec::new(), Vec::new())
+        let mut ys = crate::memory::with_capacity(y.len());
+        ys.extend_from_slice(y);
+        Self::build(x, ys, end, Vec::new(), Vec::new())
     }
 
     /// The spline through new data `(xᵢ, yᵢ)` with the same end condition, built in the
@@ -163,6 +165,9 @@ impl<const N: usize> CubicSpline<N> {
             end,
         } = self;
         ys.clear();
+        if ys.capacity() < x.len() {
+            ys = crate::memory::with_capacity(x.len());
+        }
         fill(&mut ys);
         Self::build(x, ys, end, xs, m)
     }
@@ -182,11 +187,17 @@ impl<const N: usize> CubicSpline<N> {
         if let EndCondition::Periodic = end {
             y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
+        // new buffers in huge pages where the system can (their first touch costs as much
+        // as the solve on large data)
         if xs.capacity() < x.len() {
             // zeroed by the allocator, untouched until the solve writes it (on two cores)
             xs = vec![0.0; x.len()];
+            crate::memory::advise(&xs);
         } else {
             xs.resize(x.len(), 0.0);
+        }
+        if m.capacity() < x.len() {
+            m = crate::memory::with_capacity(x.len());
         }
         m.resize(x.len(), SVector::zeros());
         let largest = moments(x, &y, &end, &mut xs, &mut m)?;
@@ -355,13 +366,9 @@ impl CubicSpline<1> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn function(x: &[f64], y: &[f64], end: EndCondition<1>) -> Result<Self> {
-        Self::build(
-            x,
-            y.iter().map(|&v| Vector1::new(v)).collect(),
-            end,
-            Vec::new(),
-            Vec::new(),
-        )
+        let mut ys = crate::memory::with_capacity(y.len());
+        ys.extend(y.iter().map(|&v| Vector1::new(v)));
+        Self::build(x, ys, end, Vec::new(), Vec::new())
     }
 
     /// [`CubicSpline::refit`] for a spline function: the spline through new data

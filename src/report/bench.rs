@@ -610,6 +610,26 @@ pub fn scaling_figure(results: &[BenchResult], machine: &str) -> Figure {
             };
             panel = panel.with(Series::line(*id, points, color).styled(style));
         }
+        // an empty band below the data for the legend, whatever the data: the legend's share
+        // of the plot's height (about 24 px per entry and 30 more of a 700-px plot) kept free
+        // on the log axis
+        let ys = results
+            .iter()
+            .filter(|r| mine.contains(&r.workload))
+            .map(|r| r.throughput())
+            .filter(|y| y.is_finite() && *y > 0.0);
+        let (lo, hi) = ys.fold((f64::INFINITY, 0.0f64), |(lo, hi), y| {
+            (lo.min(y), hi.max(y))
+        });
+        if lo < hi {
+            let band = ((24 * mine.len() + 30) as f64 / 700.0).min(0.6);
+            let decades = (hi / lo).log10().max(0.5) * 1.1;
+            let below = decades * band / (1.0 - band);
+            panel = panel.y_range(
+                lo / 10f64.powf(below + 0.05 * decades),
+                hi * 10f64.powf(0.05 * decades),
+            );
+        }
         panels.push(panel);
     }
     Figure::from(Figure2d::new(
