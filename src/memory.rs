@@ -25,6 +25,14 @@ pub(crate) fn with_capacity<T>(len: usize) -> Vec<T> {
     v
 }
 
+/// Makes room for `len` elements in `v`: if its capacity is short, `v` is replaced (its
+/// contents dropped) by [`with_capacity`]`(len)`; otherwise it is left as it is.
+pub(crate) fn reserve<T>(v: &mut Vec<T>, len: usize) {
+    if v.capacity() < len {
+        *v = with_capacity(len);
+    }
+}
+
 /// Advises huge pages for the whole 2 MiB pages inside `v`'s allocation (its capacity), if
 /// it is at least [`ADVISE_MIN`] bytes. Memory already touched keeps its pages.
 #[cfg(target_os = "linux")]
@@ -62,6 +70,9 @@ mod tests {
         for len in [0, 1, 1000, (ADVISE_MIN / 8) + 12_345, 3 << 20] {
             let mut v: Vec<f64> = with_capacity(len);
             assert!(v.capacity() >= len && v.is_empty());
+            let mut r = vec![1.0; len / 2];
+            reserve(&mut r, len);
+            assert!(r.capacity() >= len);
             v.extend((0..len).map(|i| i as f64));
             assert!(v.iter().enumerate().all(|(i, &x)| x == i as f64));
             let z = vec![0.0f64; len];

@@ -129,9 +129,18 @@ impl<const N: usize> CubicSpline<N> {
     /// reproduces the data exactly, and the moment system is strictly diagonally dominant,
     /// so its solve is stable whatever the mesh.)
     pub fn try_new(x: &[f64], y: &[SVector<f64, N>], end: EndCondition<N>) -> Result<Self> {
-        let mut ys = crate::memory::with_capacity(y.len());
-        ys.extend_from_slice(y);
-        Self::build(x, ys, end, Vec::new(), Vec::new())
+        Self::unbuilt(end).refit(x, y)
+    }
+
+    /// A spline with empty buffers, only to be rebuilt (by [`CubicSpline::rebuild`]): the one
+    /// path of a new spline and a refit.
+    fn unbuilt(end: EndCondition<N>) -> Self {
+        Self {
+            x: Vec::new(),
+            y: Vec::new(),
+            m: Vec::new(),
+            end,
+        }
     }
 
     /// The spline through new data `(xᵢ, yᵢ)` with the same end condition, built in the
@@ -152,43 +161,33 @@ impl<const N: usize> CubicSpline<N> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn refit(self, x: &[f64], y: &[SVector<f64, N>]) -> Result<Self> {
-        self.rebuild(x, |ys| ys.extend_from_slice(y))
+        self.rebuild(x, y.len(), |ys| ys.extend_from_slice(y))
     }
 
-    /// The refit of `self` through `x` and the values `fill` writes into its emptied value
-    /// buffer.
-    fn rebuild(self, x: &[f64], fill: impl FnOnce(&mut Vec<SVector<f64, N>>)) -> Result<Self> {
+    /// The spline through `x` and the `len` values `fill` writes into the emptied value buffer,
+    /// built in the buffers of `self` (empty ones for a new spline, [`CubicSpline::unbuilt`]);
+    /// buffers too small are replaced by new ones asked for in huge pages where the system
+    /// can (their first touch costs as much as the solve on large data).
+    fn rebuild(
+        self,
+        x: &[f64],
+        len: usize,
+        fill: impl FnOnce(&mut Vec<SVector<f64, N>>),
+    ) -> Result<Self> {
         let Self {
-            x: xs,
-            y: mut ys,
-            m,
+            x: mut xs,
+            mut y,
+            mut m,
             end,
         } = self;
-        ys.clear();
-        if ys.capacity() < x.len() {
-            ys = crate::memory::with_capacity(x.len());
-        }
-        fill(&mut ys);
-        Self::build(x, ys, end, xs, m)
-    }
-
-    /// [`CubicSpline::try_new`] taking ownership of the values, with buffers for the
-    /// abscissae and moments (empty for a new spline; a rebuilt spline's own in
-    /// [`CubicSpline::refit`]).
-    fn build(
-        x: &[f64],
-        mut y: Vec<SVector<f64, N>>,
-        end: EndCondition<N>,
-        mut xs: Vec<f64>,
-        mut m: Vec<SVector<f64, N>>,
-    ) -> Result<Self> {
+        y.clear();
+        crate::memory::reserve(&mut y, len);
+        fill(&mut y);
         let widest = check_spline_data(x, &y, &end)?;
         let n = x.len() - 1;
         if let EndCondition::Periodic = end {
             y[n] = y[0]; // equal within PERIODIC_MATCH: make it exact
         }
-        // new buffers in huge pages where the system can (their first touch costs as much
-        // as the solve on large data)
         if xs.capacity() < x.len() {
             // zeroed by the allocator, untouched until the solve writes it (on two cores)
             xs = vec![0.0; x.len()];
@@ -196,9 +195,7 @@ impl<const N: usize> CubicSpline<N> {
         } else {
             xs.resize(x.len(), 0.0);
         }
-        if m.capacity() < x.len() {
-            m = crate::memory::with_capacity(x.len());
-        }
+        crate::memory::reserve(&mut m, x.len());
         m.resize(x.len(), SVector::zeros());
         let largest = moments(x, &y, &end, &mut xs, &mut m)?;
         let spline = Self { x: xs, y, m, end };
@@ -366,9 +363,7 @@ impl CubicSpline<1> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn function(x: &[f64], y: &[f64], end: EndCondition<1>) -> Result<Self> {
-        let mut ys = crate::memory::with_capacity(y.len());
-        ys.extend(y.iter().map(|&v| Vector1::new(v)));
-        Self::build(x, ys, end, Vec::new(), Vec::new())
+        Self::unbuilt(end).refit_function(x, y)
     }
 
     /// [`CubicSpline::refit`] for a spline function: the spline through new data
@@ -377,7 +372,9 @@ impl CubicSpline<1> {
     /// # Errors
     /// As [`CubicSpline::try_new`].
     pub fn refit_function(self, x: &[f64], y: &[f64]) -> Result<Self> {
-        self.rebuild(x, |ys| ys.extend(y.iter().map(|&v| Vector1::new(v))))
+        self.rebuild(x, y.len(), |ys| {
+            ys.extend(y.iter().map(|&v| Vector1::new(v)))
+        })
     }
 
     /// `s(x)`.
