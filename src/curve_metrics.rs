@@ -31,32 +31,88 @@ use nalgebra::Vector2;
 /// The most segments a leaf of a [`SegmentTree`] holds.
 pub const LEAF: usize = 4;
 
-/// The distance from `p` to the segment `ab` (to the point `a` when `a = b`): the foot of the
-/// perpendicular `a + t(b − a)`, `t = (p − a)·(b − a)/|b − a|²` clamped to `[0, 1]`
-/// (coordinates beyond `1e100` scaled by a power of two first, so no square overflows).
+/// The distance from `p` to the segment `ab` (to the point `a` when `a = b`), exact to a few
+/// units of rounding of the distance itself at every magnitude.
+///
+/// The foot of the perpendicular is `a + t(b − a)`, `t = (p − a)·(b − a)/|b − a|²` clamped to
+/// `[0, 1]`. At an end the distance is `|p − a|` or `|p − b|`; inside, it is
+/// `|(p − a) × (b − a)| / |b − a|`. Both are formed from the differences `p − a`, `b − a`
+/// carried with their rounding errors (two-sum) and the cross product with exact products
+/// (fused multiply-add), in units of a power of two near the differences' size, so neither
+/// the cancellation of a point near a long segment nor the squares of tiny or huge
+/// coordinates lose the distance's digits: the error is a few `ε` of the distance plus
+/// `ε²` of the segment's length.
 pub fn segment_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    let u = unit_for(p.amax().max(a.amax()).max(b.amax()));
-    scaled_distance2(p, a, b, 1.0 / u).sqrt() * u
-}
-
-/// The squared distance from `p` to `ab`, in units of `1/k` (`k` a power of two: exact).
-fn scaled_distance2(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>, k: f64) -> f64 {
-    if k == 1.0 {
-        segment_distance2(p, a, b)
+    // only beyond f64::MAX / 4 can a difference overflow: then in units of 4 (exact but for
+    // subnormal bits, far below the rounding of such coordinates)
+    let u = if p.amax().max(a.amax()).max(b.amax()) > f64::MAX / 4.0 {
+        4.0
     } else {
-        segment_distance2(p * k, a * k, b * k)
-    }
-}
-
-fn segment_distance2(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    let ab = b - a;
-    let len2 = ab.norm_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(&ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
+        1.0
     };
-    (p - (a + ab * t)).norm_squared()
+    accurate_distance(p / u, a / u, b / u) * u
+}
+
+/// `x − y` and its rounding error: `x − y = d + e` exactly (Knuth's two-sum).
+#[inline]
+fn two_diff(x: f64, y: f64) -> (f64, f64) {
+    let d = x - y;
+    let z = d - x;
+    (d, (x - (d - z)) - (y + z))
+}
+
+/// `x · y` and its rounding error: `x · y = p + e` exactly (finite, not underflowing).
+#[inline]
+fn two_prod(x: f64, y: f64) -> (f64, f64) {
+    let p = x * y;
+    (p, x.mul_add(y, -p))
+}
+
+/// A power of two near `m > 0` (finite), as a double: `2^⌊log₂ m⌋`, or 1 for `m = 0`.
+fn power_near(m: f64) -> f64 {
+    if m == 0.0 || !m.is_finite() {
+        return 1.0;
+    }
+    let e = m.log2().floor().clamp(-1022.0, 1023.0) as i32;
+    2f64.powi(e)
+}
+
+/// [`segment_distance`] for coordinates at most `f64::MAX / 4` in magnitude (so the
+/// differences are finite).
+fn accurate_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    // the differences with their errors: d = p − a, w = b − a
+    let (dx, ex) = two_diff(p.x, a.x);
+    let (dy, ey) = two_diff(p.y, a.y);
+    let (wx, fx) = two_diff(b.x, a.x);
+    let (wy, fy) = two_diff(b.y, a.y);
+    // in units of a power of two near the larger difference (exact), so no square or
+    // product below underflows or overflows
+    let m = dx.abs().max(dy.abs()).max(wx.abs()).max(wy.abs());
+    if m == 0.0 {
+        return 0.0;
+    }
+    let k = 1.0 / power_near(m);
+    let (dx, dy, ex, ey) = (dx * k, dy * k, ex * k, ey * k);
+    let (wx, wy, fx, fy) = (wx * k, wy * k, fx * k, fy * k);
+    let len2 = wx * wx + wy * wy;
+    let dot = dx * wx + dy * wy;
+    let back = if len2 == 0.0 || dot <= 0.0 {
+        // the foot is a: |p − a|
+        (dx + ex).hypot(dy + ey)
+    } else if dot >= len2 {
+        // the foot is b: |p − b| = |d − w|
+        let (gx, gy) = (two_diff(dx, wx), two_diff(dy, wy));
+        (gx.0 + (gx.1 + ex - fx)).hypot(gy.0 + (gy.1 + ey - fy))
+    } else {
+        // inside: |d × w| / |w|, the cross product from exact products and the errors'
+        // first-order terms
+        let (p1, q1) = two_prod(dx, wy);
+        let (p2, q2) = two_prod(dy, wx);
+        let (s, r) = two_diff(p1, p2);
+        let cross = s + (r + q1 - q2 + (ex * wy + dx * fy - ey * wx - dy * fx));
+        cross.abs() / (wx + fx).hypot(wy + fy)
+    };
+    back / k
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -81,20 +137,27 @@ impl Node {
 /// Relative slack of the tree's pruning (see the search in `SegmentTree::nearest`).
 const PRUNE_SLACK: f64 = 1e-12;
 
-/// Coordinates up to this size are measured unscaled: no squared distance between them can
-/// overflow.
-const UNSCALED: f64 = 1e100;
-
-/// A power of two at least `m` (for scaling without rounding), 1 for `m ≤` [`UNSCALED`].
-fn unit_for(m: f64) -> f64 {
-    if m <= UNSCALED {
-        1.0
+/// The squared distance from `p` to `ab` by the plain formula `|(p − a) − t(b − a)|²`, for
+/// pruning the search only: with coordinates at most 2 in magnitude its distance is within
+/// [`CHEAP_REACH`] of the exact one (squares below `10⁻³⁰⁸` underflow, which only makes it
+/// smaller).
+#[inline]
+fn cheap_distance2(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    let ab = b - a;
+    let d = p - a;
+    let len2 = ab.norm_squared();
+    let t = if len2 > 0.0 {
+        (d.dot(&ab) / len2).clamp(0.0, 1.0)
     } else {
-        // m ≤ f64::MAX: the exponent is at most 1024, and 2^1024 is not a double, so stop at
-        // 2^1023 (m / 2^1023 < 2 then)
-        2f64.powi((m.log2().ceil() as i32).min(1023))
-    }
+        0.0
+    };
+    (d - ab * t).norm_squared()
 }
+
+/// How far [`cheap_distance2`]'s distance can be from the exact one, in units of `ε` times
+/// the coordinates' magnitude (the differences, the foot and its subtraction: a few `ε` of
+/// coordinates up to 2 each; taken generously).
+const CHEAP_REACH: f64 = 64.0;
 
 /// The segments of a polyline in a bounding-volume tree, for nearest-segment queries.
 #[derive(Debug, Clone)]
@@ -185,8 +248,8 @@ impl SegmentTree {
         &self.points
     }
 
-    /// The distance from `p` to the polyline: the exact minimum over its segments (computed
-    /// in units of a power of two when coordinates exceed `1e100`, so no square overflows).
+    /// The distance from `p` to the polyline: the minimum of [`segment_distance`] over its
+    /// segments, exact to a few units of rounding of the distance at every magnitude.
     /// It is finite for `p` within [`crate::error::MAX_COORDINATE`]; beyond, or for a NaN
     /// coordinate, it is unspecified (`+∞` or NaN): check query points first.
     pub fn distance(&self, p: Vector2<f64>) -> f64 {
@@ -195,19 +258,23 @@ impl SegmentTree {
 
     /// The distance from `p` to the polyline, except that the search may stop and return
     /// any distance below `stop` as soon as it finds one.
+    ///
+    /// The search prunes with the plain squared distance in units of a power of two near the
+    /// coordinates' size (so no square overflows, and only squares far below the size
+    /// underflow), and measures every segment that could tie or beat the best so far with
+    /// the accurate [`segment_distance`]: the result is the brute-force minimum of
+    /// [`segment_distance`] over the segments.
     fn nearest(&self, p: Vector2<f64>, stop: f64) -> f64 {
         let size = self.extent.max(p.amax());
-        let u = unit_for(size);
+        let u = power_near(size);
         let k = 1.0 / u;
-        let stop = (stop * k) * (stop * k);
-        // A segment's computed distance can fall below its box's distance by the rounding of
-        // the foot of the perpendicular `a + t(b − a)`: a few ulps of the largest coordinate,
-        // not of the distance (a long segment seen from a point near it: 5√2 ε of the
-        // coordinates at most, taken as 16 ε). The relative slack covers the rest (the
-        // subtraction and the squares).
-        let reach = 16.0 * f64::EPSILON * (size * k);
+        let q = p * k;
+        let stop = stop * k;
+        // the plain formula's distance is within `reach` of the exact one; the relative slack
+        // covers the box distances' rounding
+        let reach = CHEAP_REACH * f64::EPSILON * (size * k);
         let mut best = f64::INFINITY;
-        // boxes farther than this are skipped: (√best (1 + slack) + reach)²
+        // boxes and segments farther than this are skipped: (best (1 + slack) + reach)²
         let mut limit = f64::INFINITY;
         // depth ≤ log₂(segments) + 1 < 64 for any size below MAX_ELEMENTS
         let mut stack = [0u32; 64];
@@ -215,26 +282,25 @@ impl SegmentTree {
         while top > 0 {
             top -= 1;
             let node = self.nodes[stack[top] as usize];
-            // a box farther than the best so far cannot hold a nearer segment; `limit` covers
-            // the rounding of the segment formula, so every segment whose computed distance
-            // could tie or beat `best` is visited and the minimum is the brute-force one
-            // exactly
             if node.distance2(p, k) > limit {
                 continue;
             }
             if node.count > 0 {
                 let first = node.first as usize;
                 for &i in &self.order[first..first + node.count as usize] {
-                    let i = i as usize;
-                    let d = scaled_distance2(p, self.points[i], self.points[i + 1], k);
+                    let (a, b) = (self.points[i as usize], self.points[i as usize + 1]);
+                    if cheap_distance2(q, a * k, b * k) > limit {
+                        continue;
+                    }
+                    let d = segment_distance(p, a, b) * k;
                     if d < best {
                         best = d;
-                        let r = best.sqrt() * (1.0 + PRUNE_SLACK) + reach;
+                        let r = best * (1.0 + PRUNE_SLACK) + reach;
                         limit = r * r;
                     }
                 }
                 if best < stop {
-                    return best.sqrt() * u;
+                    return best * u;
                 }
                 continue;
             }
@@ -249,7 +315,7 @@ impl SegmentTree {
             stack[top + 1] = near;
             top += 2;
         }
-        best.sqrt() * u
+        best * u
     }
 
     /// The one-sided distance `maxᵢ min_{s} |from[i] − s|` from the points `from` to the

@@ -213,7 +213,7 @@ fn the_table_i_outputs_build() {
     use splinelab::report;
     let fig = report::figure("fig-table-i").unwrap();
     let rgb = fig.to_rgb().unwrap();
-    assert_eq!(rgb.len(), (fig.size.0 * fig.size.1 * 3) as usize);
+    assert_eq!(rgb.len(), (fig.size().0 * fig.size().1 * 3) as usize);
     let inked = rgb.chunks(3).filter(|p| p.iter().any(|&c| c < 200)).count();
     assert!(inked * 50 > rgb.len() / 3, "fig-table-i is nearly blank");
     let table = report::table("table-i").unwrap();

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{distance_to_polyline, hausdorff, Rng, EXACT};
+use common::{distance_close, distance_to_polyline, exact_segment_distance, hausdorff, Rng, EXACT};
 use nalgebra::Vector2;
 use proptest::prelude::*;
 use splinelab::curve_metrics::{
@@ -105,10 +105,8 @@ fn the_tree_equals_brute_force_on_awkward_polylines() {
                 distance_to_polyline(&line, q)
             };
             let d = tree.distance(q);
-            assert!(
-                (d - brute).abs() <= EXACT * brute.max(1e-300),
-                "{d} vs {brute}"
-            );
+            assert!(distance_close(d, brute, 4.0 * scale), "{d} vs {brute}");
+            assert_eq!(d, kernel_brute(&line, q));
         }
     }
 }
@@ -271,11 +269,104 @@ fn curvature_jumps_show_at_the_breaks_of_a_g1_curve_and_not_of_a_c2_one() {
     assert!(s.max_jump <= 1e-6 && s.inflections == 0, "{s:?}");
 }
 
+/// The minimum of the library's segment distance over the polyline's segments, by brute
+/// force (the tree must equal it exactly: the same kernel, the minimum in another order).
+fn kernel_brute(line: &[V], q: V) -> f64 {
+    if line.len() == 1 {
+        return segment_distance(q, line[0], line[0]);
+    }
+    line.windows(2)
+        .map(|w| segment_distance(q, w[0], w[1]))
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn brute_hausdorff(a: &[V], b: &[V]) -> f64 {
+    let one = |p: &[V], q: &[V]| p.iter().map(|&x| kernel_brute(q, x)).fold(0.0, f64::max);
+    one(a, b).max(one(b, a))
+}
+
+#[test]
+fn distances_of_tiny_shapes_do_not_underflow() {
+    // issue 23, class 3: below ~1e-154 the squares underflowed and every distance was 0, so
+    // the point search "met" any tolerance on a tiny shape (fails on the earlier code)
+    for scale in [1e-160, 1e-200, 1e-300, 1e-310] {
+        let a = V::new(0.0, 0.0) * scale;
+        let b = V::new(1.0, 0.0) * scale;
+        let p = V::new(0.5, 0.75) * scale;
+        let d = segment_distance(p, a, b);
+        let exact = exact_segment_distance(p, a, b);
+        assert!(
+            exact > 0.0 && distance_close(d, exact, scale),
+            "{scale}: {d} vs {exact}"
+        );
+        let curve = [p, V::new(0.25, 0.5) * scale];
+        let h = polyline_distances(&curve, &[a, b]).unwrap().hausdorff();
+        let exact = hausdorff(&curve, &[a, b]);
+        assert!(
+            exact > 0.0 && distance_close(h, exact, scale),
+            "{scale}: {h} vs {exact}"
+        );
+    }
+}
+
+#[test]
+fn distances_far_from_the_origin_keep_their_digits() {
+    // issue 23, class 3: near 1e7 the foot p − (a + ab·t) lost digits of the coordinates'
+    // size (1e-9 relative at 1e7); measured from a, the distance is exact to rounding
+    let o = V::new(1.234_567_8e7, -7.654_321e6);
+    let a = o + V::new(0.0, 0.0);
+    let b = o + V::new(3.0, 1.0);
+    let mut rng = Rng::new(5);
+    for _ in 0..2000 {
+        let p = o + V::new(rng.uniform(-1.0, 4.0), rng.uniform(-1.0, 2.0));
+        let d = segment_distance(p, a, b);
+        let exact = exact_segment_distance(p, a, b);
+        assert!(distance_close(d, exact, 4.0), "{p:?}: {d} vs {exact}");
+    }
+    // a point almost on a long segment: the cross product keeps the distance's digits
+    let (a, b) = (V::new(0.1, 0.3), V::new(1e6 + 0.7, 3e5 + 0.9));
+    let p = a + (b - a) * 0.37 + V::new(-3e-10, 1e-9);
+    let exact = exact_segment_distance(p, a, b);
+    let d = segment_distance(p, a, b);
+    assert!(distance_close(d, exact, 1e6), "{d} vs {exact}");
+}
+
+/// A point at magnitude `10^e` (random mantissas and signs), for the distance targets.
+fn at_magnitude() -> impl Strategy<Value = (f64, [f64; 6], f64)> {
+    (
+        -300i32..=300,
+        prop::array::uniform6(-1.0f64..1.0),
+        0.0f64..1.0,
+    )
+        .prop_map(|(e, v, near)| (10f64.powi(e), v, near))
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
 
-    /// The tree's distances and one-sided maxima equal brute force exactly (the same
-    /// segment distances, the minimum taken in another order).
+    /// The segment distance equals the exact rational one to rounding of the distance, at
+    /// magnitudes 1e-300 … 1e300, for points anywhere and points close to the segment.
+    #[test]
+    fn segment_distance_is_exact_to_rounding_at_every_magnitude((m, v, near) in at_magnitude()) {
+        let a = V::new(v[0], v[1]) * m;
+        let b = V::new(v[2], v[3]) * m;
+        // half the points lie within 1e-6 of the segment's size from it
+        let p = if near < 0.5 {
+            a + (b - a) * (2.0 * near) + V::new(v[4], v[5]) * (m * 1e-6)
+        } else {
+            V::new(v[4], v[5]) * m
+        };
+        let d = segment_distance(p, a, b);
+        let exact = exact_segment_distance(p, a, b);
+        prop_assert!(distance_close(d, exact, 4.0 * m), "{:?} {:?} {:?}: {} vs {}", p, a, b, d, exact);
+        // scale invariance: a power of two changes nothing but the exponent
+        // (towards 1, so nothing becomes subnormal)
+        let k = if m < 1.0 { 2f64.powi(40) } else { 2f64.powi(-40) };
+        prop_assert_eq!(segment_distance(p * k, a * k, b * k), d * k);
+    }
+
+    /// The tree's distances and one-sided maxima equal brute force over the same kernel
+    /// exactly, and the exact rational distances to rounding.
     #[test]
     fn tree_matches_brute_force(
         line in prop::collection::vec((-10.0f64..10.0, -10.0f64..10.0), 2..120),
@@ -284,16 +375,22 @@ proptest! {
         let line: Vec<V> = line.into_iter().map(|(x, y)| V::new(x, y)).collect();
         let other: Vec<V> = other.into_iter().map(|(x, y)| V::new(x, y)).collect();
         let tree = SegmentTree::new(&line).unwrap();
-        for &q in &other {
-            prop_assert_eq!(tree.distance(q), distance_to_polyline(&line, q));
+        for (i, &q) in other.iter().enumerate() {
+            let d = tree.distance(q);
+            prop_assert_eq!(d, kernel_brute(&line, q));
+            // the exact rational reference for a few (it is slow)
+            if i < 4 {
+                let exact = distance_to_polyline(&line, q);
+                prop_assert!(distance_close(d, exact, 40.0), "{} vs {}", d, exact);
+            }
         }
         let (far, at) = tree.farthest(&other);
-        let brute = other.iter().map(|&q| distance_to_polyline(&line, q)).fold(0.0, f64::max);
+        let brute = other.iter().map(|&q| kernel_brute(&line, q)).fold(0.0, f64::max);
         prop_assert_eq!(far, brute);
-        prop_assert_eq!(distance_to_polyline(&line, other[at.unwrap()]), brute);
+        prop_assert_eq!(kernel_brute(&line, other[at.unwrap()]), brute);
         if other.len() > 1 {
             let d = polyline_distances(&other, &line).unwrap();
-            prop_assert_eq!(d.hausdorff(), hausdorff(&other, &line));
+            prop_assert_eq!(d.hausdorff(), brute_hausdorff(&other, &line));
         }
     }
 }

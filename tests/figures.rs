@@ -105,7 +105,7 @@ fn every_figure_renders_png_and_svg() {
         assert_eq!(paths, vec![png.clone(), svg.clone()]);
         let img = image::open(&png).expect("PNG decodes").to_rgb8();
         let fig = report::figure(out.id).expect("builds");
-        assert_eq!(img.dimensions(), fig.size, "{} size", out.id);
+        assert_eq!(img.dimensions(), fig.size(), "{} size", out.id);
         let share = ink(img.pixels().map(|p| p.0));
         let plane = is_plane(&fig);
         let min = if plane { MIN_INK_PLANE } else { MIN_INK };
@@ -522,4 +522,110 @@ fn seed004_letters_and_method_comparisons_from_the_users_points() {
         (1, 1)
     )
     .is_err());
+}
+
+/// Issue 23, classes 1 and 2: data at the ends of the `f64` range, marks and layouts of any
+/// size, and a figure's size — each drawn (or refused) at once. On the earlier code the
+/// ±`f64::MAX` plot never returned from `to_svg` (the padding overflowed to ±∞ and the tick
+/// search did not end).
+#[test]
+fn extreme_data_and_sizes_draw_or_are_refused_at_once() {
+    let started = std::time::Instant::now();
+    let m = f64::MAX;
+    let data: Vec<Vec<(f64, f64)>> = vec![
+        vec![(-m, -m), (m, m)],
+        vec![(-m, 0.0), (m, 1.0), (0.0, -m)],
+        vec![(1e-300, 1e-300), (2e-300, 3e-300)],
+        vec![(1e15, 1.0), (1e15 + 0.125, 1.0)],
+        vec![(f64::NAN, 1.0), (f64::INFINITY, -f64::INFINITY), (0.0, 0.0)],
+        vec![(5e-324, -5e-324)],
+        vec![],
+    ];
+    for points in data {
+        for fixed in [
+            None,
+            Some((0.0, 1.0)),
+            Some((f64::NAN, 2.0)),
+            Some((1.0, -1.0)),
+            Some((-m, m)),
+        ] {
+            let mut panel = Panel::new("extreme", "x", "y")
+                .with(Series::line("line", points.clone(), RGBColor(0, 0, 0)).width(u32::MAX))
+                .with(
+                    Series::line("marks", points.clone(), RGBColor(200, 0, 0))
+                        .styled(Style::Points(u32::MAX)),
+                )
+                .with(
+                    Series::line("crosses", points.clone(), RGBColor(0, 0, 200))
+                        .styled(Style::Crosses(u32::MAX)),
+                )
+                .note(m, -m, "far")
+                .equal();
+            if let Some((lo, hi)) = fixed {
+                panel = panel.x_range(lo, hi).y_range(lo, hi);
+            }
+            for log in [false, true] {
+                let fig = Figure::new(Drawing::Plane(Figure2d::new(
+                    "extreme",
+                    vec![panel.clone().log(log, log)],
+                    (1, 1),
+                )));
+                let svg = fig.to_svg().expect("an extreme plot draws");
+                assert!(svg.contains("<svg"));
+                fig.clone()
+                    .with_size(200, 150)
+                    .to_rgb()
+                    .expect("and rasterises");
+            }
+        }
+    }
+    // layouts with no cell or too many are typed errors, not a panic or a huge allocation
+    for layout in [(0, 1), (1, 0), (usize::MAX, usize::MAX), (1 << 20, 1 << 20)] {
+        let fig = Figure::new(Drawing::Plane(Figure2d::new("layout", vec![], layout)));
+        assert!(
+            matches!(fig.to_svg(), Err(Error::Figure { .. })),
+            "{layout:?}"
+        );
+    }
+    // the size goes through with_size, which clamps it; to_rgb's buffer follows
+    let fig =
+        Figure::new(Drawing::Plane(Figure2d::new("size", vec![], (1, 1)))).with_size(u32::MAX, 1);
+    assert_eq!(fig.size(), (splinelab::report::figure::MAX_SIDE, 64));
+    // a 3-D scene with far, non-finite and huge marks, and a zoom beyond reason
+    let mut scene = Scene::default();
+    for at in [
+        Vector3::new(m, -m, 0.0),
+        Vector3::new(f64::NAN, 0.0, 1.0),
+        Vector3::new(0.0, 1.0, 2.0),
+    ] {
+        scene.markers.push(Marker {
+            at,
+            color: RGBColor(0, 0, 0),
+            radius: u32::MAX,
+        });
+    }
+    let view = View {
+        yaw: f64::NAN,
+        pitch: f64::INFINITY,
+        scale: 1e300,
+    };
+    let far = Figure::new(Drawing::Scene(Figure3d {
+        title: "far".into(),
+        scene: scene.clone(),
+        view,
+    }));
+    assert!(matches!(far.to_svg(), Err(Error::Figure { .. })));
+    scene.markers.remove(0);
+    let near = Figure::new(Drawing::Scene(Figure3d {
+        title: "near".into(),
+        scene,
+        view,
+    }));
+    near.to_svg().expect("a finite scene draws");
+    near.with_size(160, 120).to_rgb().expect("and rasterises");
+    assert!(
+        started.elapsed() < std::time::Duration::from_secs(60),
+        "{:?}",
+        started.elapsed()
+    );
 }

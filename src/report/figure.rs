@@ -54,8 +54,8 @@ pub enum Drawing {
 pub struct Figure {
     /// What it shows.
     pub drawing: Drawing,
-    /// Size in pixels (width, height).
-    pub size: (u32, u32),
+    /// Size in pixels (width, height), each side in `[64, MAX_SIDE]` ([`Figure::with_size`]).
+    size: (u32, u32),
 }
 
 impl From<Figure2d> for Figure {
@@ -91,6 +91,11 @@ impl Figure {
         self
     }
 
+    /// The size in pixels (width, height).
+    pub fn size(&self) -> (u32, u32) {
+        self.size
+    }
+
     /// The figure's title.
     pub fn title(&self) -> &str {
         match &self.drawing {
@@ -113,6 +118,14 @@ impl Figure {
     /// [`Error::Figure`] if the font cannot be registered or the backend fails.
     pub fn render<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<()> {
         ensure_font().map_err(|m| self.fail(m))?;
+        let problem = match &self.drawing {
+            Drawing::Plane(f) => f.layout_problem(),
+            Drawing::Scene(f) => f.scene.problem(),
+            Drawing::Map(_) => None,
+        };
+        if let Some(problem) = problem {
+            return Err(self.fail(problem));
+        }
         area.fill(&WHITE).map_err(|e| self.fail(e))?;
         match &self.drawing {
             Drawing::Plane(f) => f.draw(area),
@@ -143,8 +156,13 @@ impl Figure {
     /// # Errors
     /// As [`Figure::render`].
     pub fn to_rgb(&self) -> Result<Vec<u8>> {
-        let (w, h) = self.size;
-        let k = factor(self.size);
+        // the size is private and set through `with_size`, which clamps it; checked again here
+        // so the buffer's size arithmetic cannot overflow whatever the figure went through
+        let (w, h) = (
+            self.size.0.clamp(1, MAX_SIDE),
+            self.size.1.clamp(1, MAX_SIDE),
+        );
+        let k = factor((w, h));
         let mut big = vec![255u8; (w * k) as usize * (h * k) as usize * 3];
         {
             let backend = BitMapBackend::with_buffer(&mut big, (w * k, h * k));
@@ -152,7 +170,7 @@ impl Figure {
             self.render(&root)?;
             root.present().map_err(|e| self.fail(e))?;
         }
-        Ok(downsample(&big, self.size, k))
+        Ok(downsample(&big, (w, h), k))
     }
 
     /// Writes the figure as an anti-aliased PNG (through a temporary file renamed into place).

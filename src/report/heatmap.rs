@@ -2,6 +2,7 @@
 //! surface, or any sampled function of two parameters.
 
 use crate::grid::Grid;
+use crate::report::plot2d::axis_range;
 use crate::report::plot2d::Drawn;
 use crate::report::style::{colormap, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
 use plotters::coord::Shift;
@@ -61,11 +62,16 @@ impl HeatMap {
         });
         match self.scale {
             ColorScale::Log { decades } => {
-                let hi = hi.max(f64::MIN_POSITIVE);
-                (hi * 10f64.powf(-decades.clamp(0.5, 300.0)), hi)
+                // at least 10⁻³⁰⁰ · 10^decades, so the lower end stays a normal number
+                let hi = hi.clamp(1e-300, f64::MAX);
+                let decades = if decades.is_finite() { decades } else { 6.0 };
+                let decades = decades.clamp(0.5, 300.0).min(hi.log10() + 300.0);
+                (hi * 10f64.powf(-decades), hi)
             }
-            ColorScale::Linear if lo.is_finite() && hi > lo => (lo, hi),
-            ColorScale::Linear if lo.is_finite() => (lo - 0.5, lo + 0.5),
+            ColorScale::Linear if lo.is_finite() && hi > lo => {
+                axis_range(lo, hi, 0.0).unwrap_or((0.0, 1.0))
+            }
+            ColorScale::Linear if lo.is_finite() => axis_range(lo, lo, 0.0).unwrap_or((0.0, 1.0)),
             ColorScale::Linear => (0.0, 1.0),
         }
     }
@@ -91,6 +97,8 @@ impl HeatMap {
         let range = self.value_range();
         let (x0, x1) = ends(&self.x);
         let (y0, y1) = ends(&self.y);
+        // cells and lines are clamped to the map, so no pixel lies far outside it
+        let (cx, cy) = (|x: f64| x.clamp(x0, x1), |y: f64| y.clamp(y0, y1));
         let (main, bar) = area.split_horizontally(area.dim_in_pixel().0.saturating_sub(170));
         let mut chart = ChartBuilder::on(&main)
             .caption(&self.title, (FONT, TITLE_SIZE - 4))
@@ -106,37 +114,44 @@ impl HeatMap {
             .axis_desc_style((FONT, LABEL_SIZE))
             .label_style((FONT, TICK_SIZE))
             .draw()?;
+        // halfway to the neighbours (in halves, so no sum overflows)
         let half = |v: &[f64], i: usize| {
             let lo = if i == 0 {
                 v[0]
             } else {
-                0.5 * (v[i - 1] + v[i])
+                0.5 * v[i - 1] + 0.5 * v[i]
             };
             let hi = if i + 1 == v.len() {
                 v[i]
             } else {
-                0.5 * (v[i] + v[i + 1])
+                0.5 * v[i] + 0.5 * v[i + 1]
             };
             (lo, hi)
         };
         let cell = |i: usize, j: usize| {
             let (xa, xb) = half(&self.x, i);
             let (ya, yb) = half(&self.y, j);
+            if !(xa.is_finite() && xb.is_finite() && ya.is_finite() && yb.is_finite()) {
+                return None;
+            }
             let color = colormap(self.level(*self.values.get(i, j), range));
-            Rectangle::new([(xa, ya), (xb, yb)], color.filled())
+            Some(Rectangle::new(
+                [(cx(xa), cy(ya)), (cx(xb), cy(yb))],
+                color.filled(),
+            ))
         };
         let (n, m) = (
             self.x.len().min(self.values.rows()),
             self.y.len().min(self.values.cols()),
         );
-        chart.draw_series((0..n).flat_map(|i| (0..m).map(move |j| cell(i, j))))?;
-        for &k in &self.x_lines {
+        chart.draw_series((0..n).flat_map(|i| (0..m).filter_map(move |j| cell(i, j))))?;
+        for &k in self.x_lines.iter().filter(|k| (x0..=x1).contains(*k)) {
             chart.draw_series([PathElement::new(
                 vec![(k, y0), (k, y1)],
                 WHITE.stroke_width(2),
             )])?;
         }
-        for &k in &self.y_lines {
+        for &k in self.y_lines.iter().filter(|k| (y0..=y1).contains(*k)) {
             chart.draw_series([PathElement::new(
                 vec![(x0, k), (x1, k)],
                 WHITE.stroke_width(2),
@@ -154,13 +169,16 @@ impl HeatMap {
     }
 }
 
-/// First and last sample, widened if equal.
+/// The range of the finite samples, drawable ([`axis_range`]; widened if they are equal,
+/// `(0, 1)` for none).
 fn ends(v: &[f64]) -> (f64, f64) {
-    match (v.first(), v.last()) {
-        (Some(&a), Some(&b)) if b > a => (a, b),
-        (Some(&a), _) => (a - 0.5, a + 0.5),
-        _ => (0.0, 1.0),
-    }
+    let (lo, hi) = v
+        .iter()
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(x), hi.max(x))
+        });
+    axis_range(lo, hi, 0.0).unwrap_or((0.0, 1.0))
 }
 
 /// A vertical colour bar for values in `(lo, hi)` with its label, filling `bar`.

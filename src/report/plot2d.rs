@@ -270,6 +270,9 @@ impl Figure2d {
     /// # Errors
     /// Whatever the backend reports.
     pub fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Drawn<DB> {
+        if self.layout_problem().is_some() {
+            return Err(DrawingAreaErrorKind::LayoutError);
+        }
         // a long title shrinks to fit the width (about 0.55 em per character)
         let width = area.dim_in_pixel().0 as f64;
         let chars = self.title.chars().count().max(1) as f64;
@@ -282,8 +285,13 @@ impl Figure2d {
         } else {
             let (_, height) = body.dim_in_pixel();
             let rows = self.legend_rows(body.dim_in_pixel().0);
-            let (panels, strip) =
-                body.split_vertically(height - rows.len() as u32 * LEGEND_ROW - 8);
+            let (panels, strip) = body.split_vertically(
+                height.saturating_sub(
+                    (rows.len() as u32)
+                        .saturating_mul(LEGEND_ROW)
+                        .saturating_add(8),
+                ),
+            );
             draw_legend_strip(&strip, &rows)?;
             panels
         };
@@ -291,6 +299,17 @@ impl Figure2d {
             draw_panel(cell, panel)?;
         }
         Ok(())
+    }
+
+    /// What is wrong with the layout, if anything: no rows or columns, or more than
+    /// [`MAX_PANELS`] cells.
+    pub fn layout_problem(&self) -> Option<String> {
+        let (rows, cols) = self.layout;
+        (rows == 0 || cols == 0 || rows.saturating_mul(cols) > MAX_PANELS).then(|| {
+            format!(
+                "a layout of {rows} × {cols} panels (at least 1 × 1, at most {MAX_PANELS} cells)"
+            )
+        })
     }
 
     /// The legend entries laid out in rows that fit `width` pixels (text width estimated
@@ -332,14 +351,14 @@ fn draw_legend_strip<DB: DrawingBackend>(
                 Style::Points(radius) => {
                     strip.draw(&Circle::new(
                         (x + LEGEND_SAMPLE / 2, y),
-                        radius.max(3),
+                        radius.clamp(3, MAX_MARK),
                         color.filled(),
                     ))?;
                 }
                 Style::Crosses(radius) => {
                     strip.draw(&Cross::new(
                         (x + LEGEND_SAMPLE / 2, y),
-                        radius.max(3) as i32,
+                        radius.clamp(3, MAX_MARK) as i32,
                         color.stroke_width(2),
                     ))?;
                 }
@@ -369,7 +388,46 @@ fn draw_legend_strip<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The extent of all series, padded by 5 % (and by ±1 for a degenerate side).
+/// The most a marker's radius or a line's width is drawn with, in pixels (a larger value in
+/// a [`Style`] or [`Series::width`] is drawn at this size).
+pub const MAX_MARK: u32 = 100;
+
+/// The most panels a figure lays out (`rows · cols`).
+pub const MAX_PANELS: usize = 1024;
+
+/// The largest magnitude an axis bound takes: a quarter of `f64::MAX`, so the width of any
+/// axis range and every quantity the tick search derives from it stay finite.
+const AXIS_LIMIT: f64 = f64::MAX / 4.0;
+
+/// The narrowest axis range, relative to its bounds' magnitude: narrower ranges cannot carry
+/// distinct tick labels in `f64`.
+const MIN_RELATIVE_WIDTH: f64 = 1e-12;
+
+/// An axis range made drawable: `lo < hi`, both finite, within `±AXIS_LIMIT`, and at least
+/// [`MIN_RELATIVE_WIDTH`] of their magnitude apart, widened by `pad` of its width on each
+/// side (a degenerate range by ±1, or ±5 % of its magnitude far from 0). Computed through
+/// the midpoint and half width, so nothing overflows. `None` if `lo` or `hi` is not finite
+/// or `lo > hi`.
+pub(crate) fn axis_range(lo: f64, hi: f64, pad: f64) -> Option<(f64, f64)> {
+    if !(lo.is_finite() && hi.is_finite()) || lo > hi {
+        return None;
+    }
+    let mid = 0.5 * lo + 0.5 * hi;
+    let half = 0.5 * hi - 0.5 * lo;
+    let mut half = if half > 0.0 {
+        half * (1.0 + 2.0 * pad)
+    } else {
+        (0.05 * mid.abs()).max(1.0)
+    };
+    half = half.max(MIN_RELATIVE_WIDTH * mid.abs()).min(AXIS_LIMIT);
+    let lo = (mid - half).max(-AXIS_LIMIT);
+    let hi = (mid + half).min(AXIS_LIMIT);
+    // at the limit the clamps keep lo < hi: |mid| ≤ f64::MAX / 2 and half > 0
+    Some(if lo < hi { (lo, hi) } else { (-1.0, 1.0) })
+}
+
+/// The extent of all finite points, padded by 5 % (and by ±1 for a degenerate side), each
+/// side drawable ([`axis_range`]); a fixed range replaces its side when it is valid.
 fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     let pts = panel.series.iter().flat_map(|s| s.points.iter());
     let (mut x0, mut x1, mut y0, mut y1) = (
@@ -384,20 +442,126 @@ fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
-    let pad = |lo: f64, hi: f64| {
-        if !(lo.is_finite() && hi.is_finite()) {
-            (0.0, 1.0)
-        } else if hi - lo <= 0.0 {
-            (lo - 1.0, hi + 1.0)
+    let side = |fixed: Option<(f64, f64)>, lo: f64, hi: f64| {
+        fixed
+            .and_then(|(a, b)| if a < b { axis_range(a, b, 0.0) } else { None })
+            .or_else(|| axis_range(lo, hi, 0.05))
+            .unwrap_or((0.0, 1.0))
+    };
+    (side(panel.x_range, x0, x1), side(panel.y_range, y0, y1))
+}
+
+/// The parts of the polyline `points` inside the box `[x0, x1] × [y0, y1]`, each segment
+/// clipped to it (Liang–Barsky); a non-finite point breaks the line. Drawing only what lies
+/// in (or near) the plotting area keeps every pixel coordinate small, whatever the data.
+fn clip_polyline(
+    points: &[(f64, f64)],
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Vec<Vec<(f64, f64)>> {
+    let mut parts: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut current: Vec<(f64, f64)> = Vec::new();
+    let finite = |p: &(f64, f64)| p.0.is_finite() && p.1.is_finite();
+    for w in points.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let clipped = if finite(&a) && finite(&b) {
+            clip_segment(a, b, (x0, x1), (y0, y1))
         } else {
-            let d = 0.05 * (hi - lo);
-            (lo - d, hi + d)
+            None
+        };
+        match clipped {
+            Some((p, q)) => {
+                if current.last() != Some(&p) {
+                    if current.len() > 1 {
+                        parts.push(std::mem::take(&mut current));
+                    }
+                    current.clear();
+                    current.push(p);
+                }
+                current.push(q);
+            }
+            None => {
+                if current.len() > 1 {
+                    parts.push(std::mem::take(&mut current));
+                }
+                current.clear();
+            }
+        }
+    }
+    if current.len() > 1 {
+        parts.push(current);
+    }
+    if parts.is_empty() {
+        // a single point (or isolated points) inside: a line of one point draws nothing,
+        // but keeps the series' legend entry
+        if let Some(&p) = points
+            .iter()
+            .find(|p| finite(p) && inside(**p, (x0, x1), (y0, y1)))
+        {
+            parts.push(vec![p]);
+        }
+    }
+    parts
+}
+
+fn inside((x, y): (f64, f64), (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> bool {
+    (x0..=x1).contains(&x) && (y0..=y1).contains(&y)
+}
+
+/// The part of the segment `ab` inside the box, or `None`. The segment is parametrised in
+/// halves (`a/2 + t(b/2 − a/2)`, doubled), so no difference of coordinates overflows.
+fn clip_segment(
+    a: (f64, f64),
+    b: (f64, f64),
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Option<((f64, f64), (f64, f64))> {
+    let (ha, hb) = ((0.5 * a.0, 0.5 * a.1), (0.5 * b.0, 0.5 * b.1));
+    let (dx, dy) = (hb.0 - ha.0, hb.1 - ha.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, ha.0 - 0.5 * x0),
+        (dx, 0.5 * x1 - ha.0),
+        (-dy, ha.1 - 0.5 * y0),
+        (dy, 0.5 * y1 - ha.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    if !(t0 <= t1) {
+        return None;
+    }
+    let at = |t: f64| {
+        if t == 0.0 {
+            a
+        } else if t == 1.0 {
+            b
+        } else {
+            (
+                (2.0 * (ha.0 + t * dx)).clamp(x0, x1),
+                (2.0 * (ha.1 + t * dy)).clamp(y0, y1),
+            )
         }
     };
-    (
-        panel.x_range.unwrap_or_else(|| pad(x0, x1)),
-        panel.y_range.unwrap_or_else(|| pad(y0, y1)),
-    )
+    Some((at(t0), at(t1)))
+}
+
+/// The box points and lines are drawn in: the plotting ranges widened by half their width
+/// on each side (so markers and lines that cross the border are drawn whole), computed
+/// without overflow.
+fn drawing_box((lo, hi): (f64, f64)) -> (f64, f64) {
+    let half = 0.5 * hi - 0.5 * lo;
+    ((lo - half).max(-f64::MAX), (hi + half).min(f64::MAX))
 }
 
 /// The panel with its log axes applied: points (and fixed ranges) as `log₁₀`, points with a
@@ -482,11 +646,15 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         let (w, h) = area.dim_in_pixel();
         let pw = w.saturating_sub(Y_LABEL_AREA + 2 * MARGIN).max(1) as f64;
         let ph = h.saturating_sub(X_LABEL_AREA + CAPTION + 2 * MARGIN).max(1) as f64;
-        let scale = ((x1 - x0) / pw).max((y1 - y0) / ph);
-        let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-        (x0, x1) = (cx - 0.5 * scale * pw, cx + 0.5 * scale * pw);
-        (y0, y1) = (cy - 0.5 * scale * ph, cy + 0.5 * scale * ph);
+        // in half widths, so nothing overflows; the ranges are made drawable again after
+        let scale = ((0.5 * x1 - 0.5 * x0) / pw).max((0.5 * y1 - 0.5 * y0) / ph);
+        let (cx, cy) = (0.5 * x0 + 0.5 * x1, 0.5 * y0 + 0.5 * y1);
+        let grown = |c: f64, p: f64| axis_range(c - scale * p, c + scale * p, 0.0);
+        if let (Some(x), Some(y)) = (grown(cx, pw), grown(cy, ph)) {
+            ((x0, x1), (y0, y1)) = (x, y);
+        }
     }
+    let (bx, by) = (drawing_box((x0, x1)), drawing_box((y0, y1)));
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, (FONT, LABEL_SIZE + 2))
         .margin(MARGIN)
@@ -509,37 +677,69 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     let mut labelled = false;
     for s in &panel.series {
         let color = s.color;
-        let stroke = color.stroke_width(s.width);
-        let pts = s.points.clone();
+        let width = s.width.min(MAX_MARK);
+        let stroke = color.stroke_width(width);
+        // what lies in (or near) the plotting area only, so pixel coordinates stay small
+        let lines = || clip_polyline(&s.points, bx, by);
+        let marks = || {
+            s.points
+                .iter()
+                .copied()
+                .filter(|&p| inside(p, bx, by))
+                .collect::<Vec<_>>()
+        };
+        let mut line = |dashed: bool| -> Drawn<DB> {
+            for part in lines() {
+                if dashed {
+                    chart.draw_series(DashedLineSeries::new(part, 9, 6, stroke))?;
+                } else {
+                    chart.draw_series(LineSeries::new(part, stroke))?;
+                }
+            }
+            Ok(())
+        };
+        match s.style {
+            Style::Line => line(false)?,
+            Style::Dashed => line(true)?,
+            Style::LinePoints(_) => line(false)?,
+            _ => {}
+        }
+        // the legend entry hangs on the markers' series (empty for plain lines)
         let anno = match s.style {
-            Style::Line => chart.draw_series(LineSeries::new(pts, stroke))?,
-            Style::Dashed => chart.draw_series(DashedLineSeries::new(pts, 9, 6, stroke))?,
-            Style::Points(r) => {
-                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))?
+            Style::Points(r) | Style::LinePoints(r) => {
+                let r = r.min(MAX_MARK);
+                chart.draw_series(
+                    marks()
+                        .into_iter()
+                        .map(|p| Circle::new(p, r, color.filled())),
+                )?
             }
-            Style::LinePoints(r) => {
-                chart.draw_series(LineSeries::new(pts.clone(), stroke))?;
-                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, r, color.filled())))?
+            Style::Crosses(r) => {
+                let r = r.min(MAX_MARK) as i32;
+                chart.draw_series(
+                    marks()
+                        .into_iter()
+                        .map(|p| Cross::new(p, r, color.stroke_width(2))),
+                )?
             }
-            Style::Crosses(r) => chart.draw_series(
-                pts.into_iter()
-                    .map(|p| Cross::new(p, r as i32, color.stroke_width(2))),
-            )?,
+            Style::Line | Style::Dashed => {
+                chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
+            }
         };
         if let Some(label) = &s.label {
             labelled = true;
             let anno = anno.label(label.as_str());
             match s.style {
                 Style::Points(r) => {
-                    anno.legend(move |(x, y)| Circle::new((x + 10, y), r.max(3), color.filled()));
+                    let r = r.clamp(3, MAX_MARK);
+                    anno.legend(move |(x, y)| Circle::new((x + 10, y), r, color.filled()));
                 }
                 Style::Crosses(r) => {
-                    anno.legend(move |(x, y)| {
-                        Cross::new((x + 10, y), r.max(3) as i32, color.stroke_width(2))
-                    });
+                    let r = r.clamp(3, MAX_MARK) as i32;
+                    anno.legend(move |(x, y)| Cross::new((x + 10, y), r, color.stroke_width(2)));
                 }
                 _ => {
-                    let width = s.width.max(2);
+                    let width = width.max(2);
                     anno.legend(move |(x, y)| {
                         PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width))
                     });
@@ -548,7 +748,11 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         }
     }
     let note_font = (FONT, TICK_SIZE + 1).into_font().color(&BLACK);
-    for (x, y, text) in &panel.notes {
+    for (x, y, text) in panel
+        .notes
+        .iter()
+        .filter(|(x, y, _)| inside((*x, *y), bx, by))
+    {
         chart.draw_series(std::iter::once(Text::new(
             text.clone(),
             (*x, *y),

@@ -4,7 +4,7 @@
 //! fill the canvas, and a colour bar when colour carries height.
 
 use crate::report::heatmap::{draw_color_bar, ColorScale};
-use crate::report::plot2d::Drawn;
+use crate::report::plot2d::{axis_range, Drawn, MAX_MARK};
 use crate::report::style::{FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
 use nalgebra::Vector3;
 use plotters::coord::Shift;
@@ -147,14 +147,53 @@ impl Scene {
         }
     }
 
-    fn bounds(&self) -> (Vector3<f64>, Vector3<f64>) {
-        let pts = self
-            .quads
+    /// What keeps the scene from being drawn, if anything: a finite coordinate beyond
+    /// [`SCENE_LIMIT`] (the extents and the projection would overflow).
+    pub fn problem(&self) -> Option<String> {
+        let far = self.points().find_map(|p| {
+            p.iter()
+                .copied()
+                .find(|v| v.is_finite() && v.abs() > SCENE_LIMIT)
+        });
+        far.map(|v| format!("a scene coordinate {v:e} beyond ±{SCENE_LIMIT:e}"))
+    }
+
+    /// Every point of the scene: corners, segment ends, markers.
+    fn points(&self) -> impl Iterator<Item = Vector3<f64>> + '_ {
+        self.quads
             .iter()
             .flat_map(|q| q.corners)
             .chain(self.segments.iter().flat_map(|s| [s.a, s.b]))
-            .chain(self.markers.iter().map(|m| m.at));
-        pts.fold(
+            .chain(self.markers.iter().map(|m| m.at))
+    }
+
+    /// The scene without the primitives that have a non-finite coordinate (and with a
+    /// non-finite height bar dropped).
+    fn finite(&self) -> Scene {
+        let ok = |p: &Vector3<f64>| p.iter().all(|v| v.is_finite());
+        Scene {
+            quads: self
+                .quads
+                .iter()
+                .filter(|q| q.corners.iter().all(ok))
+                .cloned()
+                .collect(),
+            segments: self
+                .segments
+                .iter()
+                .filter(|s| ok(&s.a) && ok(&s.b))
+                .cloned()
+                .collect(),
+            markers: self.markers.iter().filter(|m| ok(&m.at)).cloned().collect(),
+            height_bar: self
+                .height_bar
+                .filter(|(a, b)| a.is_finite() && b.is_finite()),
+            ..self.clone()
+        }
+    }
+
+    fn bounds(&self) -> (Vector3<f64>, Vector3<f64>) {
+        self.points().fold(
             (
                 Vector3::repeat(f64::INFINITY),
                 Vector3::repeat(f64::NEG_INFINITY),
@@ -173,6 +212,25 @@ pub struct View {
     pub pitch: f64,
     /// Zoom relative to the fit that fills the plotting area (1: fill it).
     pub scale: f64,
+}
+
+impl View {
+    /// The view as drawn: a non-finite angle is the default's, and the zoom is clamped to
+    /// `[1/16, 16]` (a non-finite or non-positive zoom is 1), so the projected scene stays
+    /// within a few figure sizes of the plotting area.
+    pub fn drawable(self) -> Self {
+        let default = Self::default();
+        let pick = |v: f64, d: f64| if v.is_finite() { v } else { d };
+        Self {
+            yaw: pick(self.yaw, default.yaw),
+            pitch: pick(self.pitch, default.pitch),
+            scale: if self.scale.is_finite() && self.scale > 0.0 {
+                self.scale.clamp(1.0 / 16.0, 16.0)
+            } else {
+                1.0
+            },
+        }
+    }
 }
 
 impl Default for View {
@@ -206,6 +264,10 @@ fn to_plot(p: &Vector3<f64>) -> (f64, f64, f64) {
     (p.y, p.z, p.x)
 }
 
+/// The largest coordinate magnitude a scene may have (`10³⁰⁰`): its extents, padding and
+/// projection then stay finite.
+pub const SCENE_LIMIT: f64 = 1e300;
+
 /// Width of the colour bar strip on the right of a height-coloured scene.
 const BAR_WIDTH: u32 = 150;
 
@@ -230,13 +292,22 @@ pub fn draw_scene<DB: DrawingBackend>(
         }
         None => (area.clone(), None),
     };
+    if scene.problem().is_some() {
+        return Err(DrawingAreaErrorKind::LayoutError);
+    }
+    let view = view.drawable();
+    // the finite primitives only (a NaN or infinite corner has no place in the picture)
+    let scene = &scene.finite();
     let (lo, hi) = scene.bounds();
     let (lo, hi) = if lo.iter().chain(hi.iter()).all(|v| v.is_finite()) {
         (lo, hi)
     } else {
         (Vector3::zeros(), Vector3::repeat(1.0))
     };
-    let pad = ((hi - lo).amax() * 0.04).max(1e-9);
+    // within SCENE_LIMIT (checked above) no extent overflows; the pad keeps a degenerate
+    // side some width relative to its coordinates
+    let size = lo.amax().max(hi.amax());
+    let pad = ((hi - lo).amax() * 0.04).max(1e-9 * size.max(1.0));
     let (lo, hi) = (lo.add_scalar(-pad), hi.add_scalar(pad));
     let ext = hi - lo;
     let mut chart = ChartBuilder::on(&area)
@@ -353,16 +424,17 @@ pub fn draw_scene<DB: DrawingBackend>(
     }
     let (bx, by) = area.get_base_pixel();
     for s in &scene.segments {
+        let width = s.width.min(MAX_MARK);
         chart.draw_series(std::iter::once(PathElement::new(
             vec![to_plot(&s.a), to_plot(&s.b)],
-            s.color.stroke_width(s.width),
+            s.color.stroke_width(width),
         )))?;
         if s.arrow {
             let (a, b) = (
                 coord.translate(&to_plot(&s.a)),
                 coord.translate(&to_plot(&s.b)),
             );
-            if let Some(head) = arrowhead(a, b, 6.0 + 2.5 * s.width as f64) {
+            if let Some(head) = arrowhead(a, b, 6.0 + 2.5 * width as f64) {
                 let head: Vec<(i32, i32)> = head.iter().map(|&(x, y)| (x - bx, y - by)).collect();
                 area.draw(&Polygon::new(head, s.color.filled()))?;
             }
@@ -372,15 +444,11 @@ pub fn draw_scene<DB: DrawingBackend>(
         scene
             .markers
             .iter()
-            .map(|m| Circle::new(to_plot(&m.at), m.radius, m.color.filled())),
+            .map(|m| Circle::new(to_plot(&m.at), m.radius.min(MAX_MARK), m.color.filled())),
     )?;
     draw_legend(&area, &scene.legend)?;
     if let (Some(bar), Some((z0, z1))) = (bar, scene.height_bar) {
-        let range = if z1 > z0 {
-            (z0, z1)
-        } else {
-            (z0 - 0.5, z0 + 0.5)
-        };
+        let range = axis_range(z0, z1.max(z0), 0.0).unwrap_or((0.0, 1.0));
         draw_color_bar(&bar, "height z", range, ColorScale::Linear)?;
     }
     Ok(())

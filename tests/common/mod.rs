@@ -52,16 +52,54 @@ impl Rng {
     }
 }
 
-/// Distance from `x` to the polyline `line` (exact point-to-segment distances): the test-side
-/// reference for curve errors.
+/// The distance from `p` to the segment `ab` in exact rational arithmetic, rounded once: the
+/// test-side reference for distances at every magnitude. The inputs are converted exactly,
+/// the foot `t = clamp((p − a)·(b − a)/|b − a|², 0, 1)` and the squared distance are exact,
+/// and the square root is taken of the squared distance scaled by a power of 4 into
+/// `[1/4, 16)` (so `f64` holds it whatever its magnitude) and scaled back: correct to about
+/// one unit of rounding of the distance.
+pub fn exact_segment_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    use num_bigint::BigInt;
+    use num_rational::BigRational as Q;
+    use num_traits::{ToPrimitive, Zero};
+    let r = |x: f64| Q::from_float(x).expect("finite");
+    let (dx, dy) = (r(p.x) - r(a.x), r(p.y) - r(a.y));
+    let (wx, wy) = (r(b.x) - r(a.x), r(b.y) - r(a.y));
+    let len2 = &wx * &wx + &wy * &wy;
+    let dot = &dx * &wx + &dy * &wy;
+    let t = if len2.is_zero() || dot <= Q::zero() {
+        Q::zero()
+    } else if dot >= len2 {
+        Q::from_integer(BigInt::from(1))
+    } else {
+        dot / len2
+    };
+    let (ex, ey) = (dx - &t * wx, dy - &t * wy);
+    let q = &ex * &ex + &ey * &ey;
+    if q.is_zero() {
+        return 0.0;
+    }
+    let e = (q.numer().bits() as i64 - q.denom().bits() as i64) / 2;
+    let four_e = Q::from_integer(BigInt::from(1) << (2 * e.unsigned_abs()));
+    let scaled = if e >= 0 { q / four_e } else { q * four_e };
+    let root = scaled.to_f64().expect("in range").sqrt();
+    // 2^e in two steps, so neither factor overflows before the product
+    let half = 2f64.powi((e / 2) as i32);
+    root * half * 2f64.powi((e - e / 2) as i32)
+}
+
+/// Distance from `x` to the polyline `line`: the minimum of the exact segment distances
+/// ([`exact_segment_distance`]); the test-side reference for curve errors.
 pub fn distance_to_polyline(line: &[Vector2<f64>], x: Vector2<f64>) -> f64 {
     line.windows(2)
-        .map(|w| {
-            let (a, b) = (w[0], w[1]);
-            let t = ((x - a).dot(&(b - a)) / (b - a).norm_squared()).clamp(0.0, 1.0);
-            (x - (a + (b - a) * t)).norm()
-        })
+        .map(|w| exact_segment_distance(x, w[0], w[1]))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// Distances agree with the exact reference to rounding of the distance itself: a few `ε`
+/// of it, plus `ε²` of the coordinates' differences `scale` (the library's stated bound).
+pub fn distance_close(d: f64, exact: f64, scale: f64) -> bool {
+    (d - exact).abs() <= 16.0 * f64::EPSILON * exact + f64::EPSILON * f64::EPSILON * scale
 }
 
 /// Symmetric Hausdorff distance between two dense polylines, by brute force.
