@@ -260,6 +260,18 @@ pub enum Error {
         /// Index of the middle point `i`.
         index: usize,
     },
+    /// An Angular spline piece has no G¹ curve: one end tangent lies on the chord line and
+    /// the other does not, or a tangent on it points back along the chord (collinear points
+    /// that reverse direction). The construction's limit there is the chord with a corner at
+    /// the other end, or a spike (seed 004 §3; derived in `interp::angular`).
+    #[error("no G¹ Angular piece from point {point} to point {next}: {reason}", next = point.saturating_add(1))]
+    NoSmoothPiece {
+        /// Index of the piece's first point among the spline's points (guides included); 0
+        /// from [`crate::interp::angular::classify`], which sees angles only.
+        point: usize,
+        /// Which limit it is.
+        reason: &'static str,
+    },
     /// A construction has no valid result for these inputs (a guide for a tangent pointing away
     /// from the next point, an inflection rule whose split is unusable).
     #[error("{what}: {reason}")]

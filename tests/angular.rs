@@ -239,9 +239,12 @@ fn three_points_and_closure_reproduce_the_circle() {
     }
 }
 
+/// Issue 23, class 4: the corner triples of the old rectangle rule (the corner and a point on
+/// each side near it) put one end tangent of a piece on its chord and the other not. The
+/// construction's limit there is the chord with a corner, so no G¹ piece exists: refused
+/// (the earlier code drew straight pieces with a 90° corner, in a curve documented as G¹).
 #[test]
-fn the_rectangle_with_twelve_plus_three_points_is_exact() {
-    // 2 : 1, three points per corner (the corner and one on each side near it)
+fn corner_triples_have_no_g1_piece_and_are_refused() {
     let (w, h, e) = (2.0, 1.0, 0.1);
     let corners = [v(w, 0.0), v(w, h), v(0.0, h), v(0.0, 0.0)];
     let mut q = Vec::new();
@@ -252,19 +255,58 @@ fn the_rectangle_with_twelve_plus_three_points_is_exact() {
         q.push(c);
         q.push(c + (next - c).normalize() * e);
     }
-    let spline = AngularSpline::closed(&q).expect("valid");
-    assert_eq!(
-        spline.points().len(),
+    assert!(matches!(
+        AngularSpline::closed(&q),
+        Err(Error::NoSmoothPiece { .. })
+    ));
+    // three collinear points then a turn: the piece between the second and third
+    let turn = vec![v(0.0, 0.0), v(1.0, 0.0), v(2.0, 0.0), v(3.0, 1.0)];
+    assert!(matches!(
+        AngularSpline::try_new(turn),
+        Err(Error::NoSmoothPiece { point: 1, .. })
+    ));
+    // collinear points that reverse direction: the tangent at the turn points back
+    let back = vec![
+        v(0.0, 0.0),
+        v(2.0, 0.0),
+        v(1.0, 0.0),
+        v(3.0, 0.0),
+        v(4.0, 0.0),
+    ];
+    assert!(matches!(
+        AngularSpline::try_new(back),
+        Err(Error::NoSmoothPiece { point: 2, .. })
+    ));
+    // the rounded corners of the paper's configuration (a point on either side and the
+    // midpoint of the quarter circle tangent there) are G¹ and close to the rectangle
+    let shape = splinelab::shapes::Shape::Rectangle {
+        width: w,
+        height: h,
+    };
+    let set = splinelab::seeds::seed004::paper_points(
+        &shape,
+        &splinelab::interp::methods::Method::Angular,
         15,
-        "the paper's twelve plus three for closure"
-    );
-    assert!(spline.kinds().iter().all(|k| *k == PieceKind::Straight));
-    for x in spline.polyline(2001).unwrap() {
-        let off = x.x.min(w - x.x).abs().min(x.y.min(h - x.y).abs());
-        let inside = (-1e-15..=w + 1e-15).contains(&x.x) && (-1e-15..=h + 1e-15).contains(&x.y);
+    )
+    .unwrap();
+    let spline = AngularSpline::closed(&set.points).expect("rounded corners are G¹");
+    assert_eq!(spline.points().len(), 15, "twelve plus three for closure");
+    assert_g1(&spline);
+}
+
+/// The one-sided unit tangents of adjacent pieces agree at every joint.
+fn assert_g1(spline: &AngularSpline) {
+    for j in 1..spline.pieces() {
+        let left = spline
+            .eval_piece(j - 1, Dual64::from_re(1.0).derivative())
+            .map(|x| x.eps);
+        let right = spline
+            .eval_piece(j, Dual64::from_re(0.0).derivative())
+            .map(|x| x.eps);
+        let (l, r) = (left.normalize(), right.normalize());
         assert!(
-            inside && off <= 1e-15,
-            "{x:?} is off the rectangle by {off:e}"
+            l.perp(&r).abs() <= 1e-9 && l.dot(&r) > 0.0,
+            "joint {j}: {l:?} vs {r:?}"
         );
     }
 }
@@ -322,20 +364,20 @@ fn every_inflection_half_is_valid_for_all_end_angles() {
         for i in 1..100 {
             for j in 1..100 {
                 let (a, b) = (PI * i as f64 / 100.0, PI * j as f64 / 100.0);
-                assert_eq!(classify(a, b), PieceKind::Inflection);
+                assert_eq!(classify(a, b), Ok(PieceKind::Inflection));
                 let f = rule.split(a, b);
                 // A1 and the mirror put P_F at the chord midpoint: the halves share its line
                 assert_eq!((f.x, f.y), (0.0, 0.0));
                 assert!(f.phi.sin().abs() > COLLINEAR_SIN);
                 assert_eq!(
                     classify(a, f.phi),
-                    PieceKind::Standard,
+                    Ok(PieceKind::Standard),
                     "{} at ({a}, {b})",
                     rule.name()
                 );
                 assert_eq!(
                     classify(f.phi, b),
-                    PieceKind::Reflected,
+                    Ok(PieceKind::Reflected),
                     "{} at ({a}, {b})",
                     rule.name()
                 );
@@ -477,8 +519,14 @@ fn the_collinear_limit_is_the_straight_chord() {
             "φ = {phi:e}: bulge {bulge:e}"
         );
     }
-    // exactly collinear guide: the chord itself
-    let spline = AngularSpline::try_new(vec![v(-3.0, 0.0), p1, p2, g3]).expect("valid");
+    // an exactly collinear guide with the other end at −30°: the limit has a corner at P₂,
+    // no G¹ piece (issue 23: the earlier code drew the chord with that corner)
+    assert!(matches!(
+        AngularSpline::try_new(vec![v(-3.0, 0.0), p1, p2, g3]),
+        Err(Error::NoSmoothPiece { point: 1, .. })
+    ));
+    // both guides collinear: the chord itself, both end tangents along it
+    let spline = AngularSpline::try_new(vec![v(-3.0, 0.0), p1, p2, v(3.0, 0.0)]).expect("valid");
     assert_eq!(spline.kinds(), &[PieceKind::Straight]);
     for x in spline.polyline(101).unwrap() {
         assert_eq!(x.y, 0.0);
@@ -731,25 +779,21 @@ fn the_fast_polyline_is_the_reference_polyline() {
 }
 
 /// A tangent within `COLLINEAR_SIN` of pointing straight back along its piece's chord (two
-/// points one ulp apart make it: found by the random-input tests): the part of the piece it
-/// ends is the straight chord (spec decision A2, the limit as `φ → π`), finite, with `C″ = 0`,
-/// and the curve still interpolates both ends.
+/// points one ulp apart make it: found by the random-input tests). The earlier code drew the
+/// half it ends as the straight chord, leaving the point against its tangent (a cusp); the
+/// construction's limit as `φ → π` has a spike, so there is no G¹ piece: refused.
 #[test]
-fn a_backward_tangent_makes_a_straight_part() {
+fn a_backward_tangent_has_no_g1_piece() {
     let pts = vec![
         v(4.741584615680437, -1.2599735463917355e-7),
         v(4.741584615680438, -1.2599735463917352e-7),
         v(-5.9108354940683325, -4.5450206265420734e-7),
         v(-141601.26756183736, -3.7291867506211367),
     ];
-    let c = AngularSpline::try_new(pts.clone()).unwrap();
-    let t0 = c.tangents()[0];
-    let chord = (pts[2] - pts[1]).normalize();
-    assert!(t0.dot(&chord) < 0.0 && t0.perp(&chord).abs() <= 2.0 * COLLINEAR_SIN);
-    let e = c.eval_piece(0, num_dual::Dual2_64::from_re(0.0).derivative());
-    assert_eq!(e.map(|x| x.v2), V::zeros(), "the first part is straight");
-    let d = e.map(|x| x.v1);
-    assert!(d.dot(&chord) > 0.0 && d.perp(&chord).abs() <= 1e-12 * d.norm());
-    assert_eq!(c.point(0.0), pts[1]);
-    assert!((c.point(1.0) - pts[2]).amax() <= 1e-15 * 6.0);
+    let r = AngularSpline::try_new(pts);
+    assert!(
+        matches!(r, Err(Error::NoSmoothPiece { point: 1, .. })),
+        "{:?}",
+        r.map(|c| c.kinds().to_vec())
+    );
 }

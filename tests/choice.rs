@@ -55,6 +55,14 @@ fn automatic_counts_never_exceed_the_paper_rule_and_their_errors_hold() {
     assert_eq!(cells.len(), 36);
     for (index, study) in cells.iter().enumerate() {
         let auto = &study.automatic;
+        if auto.method == Method::Angular && matches!(study.shape, Shape::Rectangle { .. }) {
+            // a G¹ curve has no corners, and Angular points on a polygon cannot avoid the
+            // collinear triples that have no G¹ piece (issue 23): the search reports its best
+            // valid configuration, honestly out of tolerance
+            assert!(!auto.within_tolerance, "cell {index}: {auto:?}");
+            assert!(auto.measure.distances.hausdorff() > study.tolerance);
+            continue;
+        }
         assert!(auto.within_tolerance, "cell {index}: {auto:?}");
         if let Some(rule) = &study.paper_rule {
             assert!(
@@ -108,9 +116,11 @@ fn a_polygon_gets_its_corners() {
     let linear = fewest_points(&target, Family::Linear, &SearchOptions::default()).unwrap();
     assert_eq!(linear.measure.counted, 5);
     assert!(linear.measure.distances.hausdorff() <= 1e-12);
+    // the Angular spline is G¹: its points cannot make corners (a collinear triple beside a
+    // turn has no G¹ piece, issue 23), so it misses the polygon, and says so
     let angular = fewest_points(&target, Family::Angular, &SearchOptions::default()).unwrap();
-    assert!(angular.within_tolerance);
-    assert!(angular.measure.counted <= 11, "{}", angular.measure.counted);
+    assert!(!angular.within_tolerance);
+    assert!(splinelab::AngularSpline::closed(&angular.points).is_ok());
 }
 
 #[test]
@@ -228,8 +238,50 @@ fn a_polygon_with_few_vertices_gets_points_on_its_sides() {
     let outer = &splinelab::seeds::seed004::polygonal_a()[0];
     let tolerance = splinelab::comparison::contour_tolerance(std::slice::from_ref(outer));
     let target = Target::polyline(outer, true, tolerance).unwrap();
+    // the Angular spline cannot draw its corners (G¹, issue 23): the best valid configuration
+    // is reported, out of tolerance; the cubic spline draws the same contour within it
     let c = fewest_points(&target, Family::Angular, &SearchOptions::default()).unwrap();
-    assert!(c.within_tolerance, "{:?}", c.measure);
-    assert!(c.measure.counted <= 19, "{}", c.measure.counted);
-    assert!(c.points.len() > outer.len());
+    assert!(!c.within_tolerance, "{:?}", c.measure);
+    assert!(splinelab::AngularSpline::closed(&c.points).is_ok());
+    let cubic = fewest_points(&target, Family::Cubic, &SearchOptions::default()).unwrap();
+    assert!(cubic.within_tolerance, "{:?}", cubic.measure);
+}
+
+/// Issue 23, class 7: a `max_points` below the family's fewest is a typed error; the earlier
+/// code searched the family's minimum anyway, trying more points than allowed.
+#[test]
+fn a_point_budget_below_the_family_minimum_is_refused() {
+    let target = Target::shape(&Shape::Ellipse { ratio: 0.7 }, 256).unwrap();
+    for (family, fewest) in [
+        (Family::Angular, 6),
+        (Family::Cardinal, 6),
+        (Family::Cubic, 4),
+        (Family::BSpline, 4),
+    ] {
+        for max_points in [0, 1, fewest - 1] {
+            let options = SearchOptions {
+                max_points,
+                budget_per_coordinate: 2,
+                known: None,
+            };
+            let r = fewest_points(&target, family, &options);
+            assert!(
+                matches!(r, Err(Error::TooFewPoints { needed, got, .. }) if needed == fewest && got == max_points),
+                "{family:?} with {max_points}: {:?}",
+                r.map(|c| c.measure.counted)
+            );
+        }
+        // at the minimum the search runs and stays within it
+        let options = SearchOptions {
+            max_points: fewest,
+            budget_per_coordinate: 2,
+            known: None,
+        };
+        let c = fewest_points(&target, family, &options).unwrap();
+        assert!(
+            c.measure.counted <= fewest,
+            "{family:?}: {}",
+            c.measure.counted
+        );
+    }
 }

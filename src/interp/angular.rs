@@ -37,11 +37,31 @@
 //! standard piece of the mirrored data, mirrored back. Guides on opposite sides (`φᵢ`, `φᵢ₊₁`
 //! of one sign): an inflection, split at a point `P_F` with a tangent there chosen by an
 //! [`InflectionRule`] — the paper uses "a heuristic procedure" it does not give; the default
-//! [`HermiteMidpoint`] is the spec's decision A1. An end tangent within
-//! [`COLLINEAR_SIN`] of the chord line (three collinear points, spec decision A2): the straight
-//! segment, the limit of the construction (the bulge is about `2φd`).
+//! [`HermiteMidpoint`] is the spec's decision A1.
 //!
-//! **Properties** (tested): interpolation, G¹ at every joint (the joined curve is not G²: the
+//! **End tangents on the chord line** (collinear points; the paper does not cover them, spec
+//! decision A2 revised). The half-angle form gives the limits directly:
+//!
+//! - *Both* angles to 0 (`φᵢ = εa`, `φᵢ₊₁ = −εb`, `ε → 0`): `x → −d((1 − s)a − sb)/((1 − s)a + sb)`
+//!   and `y = O(εd)`: the piece tends to the chord, with both end tangents along it. The
+//!   straight chord is the G¹ limit, and a piece whose two angles are within
+//!   [`COLLINEAR_SIN`] of 0 is the chord ([`PieceKind::Straight`]).
+//! - *One* angle to 0, the other fixed (`φᵢ → 0`, `φᵢ₊₁ = −b`): for every `s > 0`, `x → d` and
+//!   `y → 0` — the piece runs along the chord and turns in a hook of size `≈ 2φᵢd` at `Pᵢ₊₁`.
+//!   The limit arrives at `Pᵢ₊₁` along the chord, not along its tangent: a corner of angle
+//!   `b`. No G¹ curve is the limit, so such a piece is refused ([`Error::NoSmoothPiece`]).
+//! - An angle to `π` (a tangent pointing back along the chord, as when collinear points
+//!   reverse direction): the piece first runs backwards along the chord line, to
+//!   `x = −d(π + b)/(π − b)`, and turns there with a spike in the limit: refused too.
+//!
+//! Angles just beyond the threshold keep the paper's curve: G¹, with a hook of size about
+//! `2d|sin φ|` that is invisible at `10⁻⁹`. A consequence: the piece at either end of a run
+//! of collinear points beside a turn has one tangent on its chord and the other not, so
+//! an Angular spline has straight pieces only when all its points lie on one line, and it
+//! cannot draw a polygon's corners (the paper's rectangle from corner triples is not G¹; the
+//! seed-004 study reports it out of tolerance).
+//!
+//! **Properties** (tested): interpolation, G¹ at every joint of every curve built (the joined curve is not G²: the
 //! curvature at an end is not the circle's), locality (four points per piece), invariance
 //! under similarities. The paper claims invariance under *all* affine maps; that is false —
 //! a shear or a non-uniform scale changes the curve (the tests carry a counterexample).
@@ -51,14 +71,15 @@ use crate::error::{finite_points, Error, Result};
 use nalgebra::Vector2;
 use num_dual::DualNum;
 
-/// An end tangent whose angle `φ` from the chord has `|sin φ| ≤ COLLINEAR_SIN` makes the piece
-/// the straight chord (spec decision A2: the limit of the construction as `φ → 0` or `π`).
+/// An end tangent whose angle `φ` from the chord has `|sin φ| ≤ COLLINEAR_SIN` lies on the
+/// chord line ([`classify`]: the piece is the straight chord when both do and point forward,
+/// and has no G¹ curve otherwise).
 pub const COLLINEAR_SIN: f64 = 1e-9;
 
 /// How a piece `Pᵢ → Pᵢ₊₁` is built, from the end tangents' angles `φᵢ`, `φᵢ₊₁` to the chord.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PieceKind {
-    /// An end tangent on the chord line: the straight chord.
+    /// Both end tangents along the chord, forwards: the straight chord.
     Straight,
     /// `φᵢ > 0 > φᵢ₊₁`: the paper's standard case, a hump to the left of the chord.
     Standard,
@@ -70,15 +91,27 @@ pub enum PieceKind {
 
 /// The case of a piece whose end tangents make angles `phi_a`, `phi_b` (radians, in
 /// `(−π, π]`) with its chord: the one classification rule of the construction.
-pub fn classify(phi_a: f64, phi_b: f64) -> PieceKind {
-    if phi_a.sin().abs() <= COLLINEAR_SIN || phi_b.sin().abs() <= COLLINEAR_SIN {
-        PieceKind::Straight
-    } else if phi_a > 0.0 && phi_b < 0.0 {
-        PieceKind::Standard
-    } else if phi_a < 0.0 && phi_b > 0.0 {
-        PieceKind::Reflected
-    } else {
-        PieceKind::Inflection
+///
+/// An angle within [`COLLINEAR_SIN`] of the chord line is on it. The straight chord is the
+/// limit of the paper's curve as *both* angles tend to 0 (module docs), so a piece is
+/// [`PieceKind::Straight`] when both are on the line and point forward. When only one is,
+/// or one points back along the chord (`φ → π`), the limit has a corner or a spike and there
+/// is no G¹ piece: [`Error::NoSmoothPiece`] (with `point` 0: the caller knows the index).
+///
+/// # Errors
+/// [`Error::NoSmoothPiece`] as above; [`Error::NonFinite`] for a NaN angle.
+pub fn classify(phi_a: f64, phi_b: f64) -> Result<PieceKind> {
+    crate::error::finite("Angular end angle", phi_a)?;
+    crate::error::finite("Angular end angle", phi_b)?;
+    let on_line = |phi: f64| phi.sin().abs() <= COLLINEAR_SIN;
+    let refuse = |reason| Err(Error::NoSmoothPiece { point: 0, reason });
+    match (on_line(phi_a), on_line(phi_b)) {
+        (true, true) if phi_a.cos() > 0.0 && phi_b.cos() > 0.0 => Ok(PieceKind::Straight),
+        (true, true) => refuse("an end tangent points back along the chord (the points reverse direction on a line)"),
+        (true, false) | (false, true) => refuse("one end tangent lies on the chord line and the other does not (the limit is the chord with a corner)"),
+        _ if phi_a > 0.0 && phi_b < 0.0 => Ok(PieceKind::Standard),
+        _ if phi_a < 0.0 && phi_b > 0.0 => Ok(PieceKind::Reflected),
+        _ => Ok(PieceKind::Inflection),
     }
 }
 
@@ -416,8 +449,10 @@ impl AngularSpline {
     /// [`Error::TooFewPoints`] below 4 points; [`Error::TooLarge`] beyond
     /// [`crate::error::MAX_ELEMENTS`]; [`Error::NonFinite`] or [`Error::CoordinateTooLarge`]
     /// for a point; [`Error::RepeatedPoint`] for two equal consecutive points;
-    /// [`Error::ReversedPoints`] if `Pᵢ₊₁ = Pᵢ₋₁` (no circle); [`Error::Degenerate`] if the
-    /// rule's split is unusable; [`Error::CoordinateTooLarge`] if a piece could leave the
+    /// [`Error::ReversedPoints`] if `Pᵢ₊₁ = Pᵢ₋₁` (no circle); [`Error::NoSmoothPiece`] for
+    /// a piece with one end tangent on its chord line and the other not, or one pointing back
+    /// along it ([`classify`]: no G¹ piece exists); [`Error::Degenerate`] if the rule's split
+    /// is unusable; [`Error::CoordinateTooLarge`] if a piece could leave the
     /// coordinate limit.
     pub fn with_rule(points: Vec<Vector2<f64>>, rule: &dyn InflectionRule) -> Result<Self> {
         crate::error::size("Angular spline points", points.len())?;
@@ -446,7 +481,14 @@ impl AngularSpline {
         breaks.push(0.0);
         for j in 0..pieces {
             let (p0, p1) = (points[j + 1], points[j + 2]);
-            let (kind, piece) = build(p0, p1, tangents[j], tangents[j + 1], rule)?;
+            let (kind, piece) =
+                build(p0, p1, tangents[j], tangents[j + 1], rule).map_err(|e| match e {
+                    Error::NoSmoothPiece { reason, .. } => Error::NoSmoothPiece {
+                        point: j + 1,
+                        reason,
+                    },
+                    other => other,
+                })?;
             kinds.push(kind);
             if let [first, second] = piece[..] {
                 arcs.extend([first, second]);
@@ -616,7 +658,7 @@ fn build(
 ) -> Result<(PieceKind, Vec<Arc>)> {
     let frame = Frame::new(p0, p1);
     let (phi_a, phi_b) = (frame.angle(t0), frame.angle(t1));
-    let kind = classify(phi_a, phi_b);
+    let kind = classify(phi_a, phi_b)?;
     if kind != PieceKind::Inflection {
         return Ok((kind, vec![frame.arc(kind, phi_a, phi_b)?]));
     }
@@ -640,10 +682,22 @@ fn build(
         });
     }
     let mut arcs = Vec::with_capacity(2);
-    for (a, b, ta, tb) in [(p0, pf, t0, tf), (pf, p1, tf, t1)] {
+    for (first, (a, b, ta, tb)) in [(true, (p0, pf, t0, tf)), (false, (pf, p1, tf, t1))] {
         let half = Frame::new(a, b);
         let (ha, hb) = (half.angle(ta), half.angle(tb));
-        let kind = classify(ha, hb);
+        // the split's own tangent on its half chord is the rule's failure; the piece's end
+        // tangent on it (the half chord is the chord's direction) is the piece's
+        let split_angle = if first { hb } else { ha };
+        let kind = classify(ha, hb).map_err(|e| {
+            if split_angle.sin().abs() <= COLLINEAR_SIN {
+                Error::NoSmoothPiece {
+                    point: 0,
+                    reason: "the inflection's split tangent lies on a half's chord line (the end tangents are near the chord line)",
+                }
+            } else {
+                e
+            }
+        })?;
         if kind == PieceKind::Inflection {
             return Err(Error::Degenerate {
                 what: "inflection rule",

@@ -552,11 +552,34 @@ impl Default for SearchOptions {
 /// If no count up to [`SearchOptions::max_points`] does, the configuration with the lowest
 /// error at the largest count is returned with `within_tolerance == false`.
 ///
+/// Every configuration tried counts at most [`SearchOptions::max_points`] points (as the
+/// paper counts them: repeats and guides included).
+///
 /// # Errors
-/// [`Error::TooLarge`] for a `max_points` beyond [`crate::error::MAX_ELEMENTS`]; the errors
-/// of [`Target::measure`] on the returned configuration.
+/// [`Error::TooLarge`] for a `max_points` beyond [`crate::error::MAX_ELEMENTS`];
+/// [`Error::TooFewPoints`] for a `max_points` below the family's fewest on this target;
+/// [`Error::Degenerate`] if no configuration tried is valid (an Angular spline on a polygon
+/// whose every placement has collinear triples, say); the errors of [`Target::measure`] on
+/// the returned configuration.
 pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -> Result<Choice> {
     crate::error::size("maximum point count", options.max_points)?;
+    let min = if family == Family::BSpline {
+        // the fewest vertices of the fit (a closed polygon's closing vertex counted once)
+        if target.closed {
+            4
+        } else {
+            2
+        }
+    } else {
+        counted_of(family, target.closed, min_distinct(family, target.closed))
+    };
+    if options.max_points < min {
+        return Err(Error::TooFewPoints {
+            what: "maximum point count of the search (the family's fewest on this target)",
+            needed: min,
+            got: options.max_points,
+        });
+    }
     if family == Family::BSpline {
         return fewest_bspline(target, options);
     }
@@ -565,17 +588,23 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     // the count is capped at a few points per reference segment (points may sit anywhere on
     // a segment: a polygon's sides need them), which bounds the search's cost for any
     // `max_points`
-    let max = distinct_of(family, target.closed, options.max_points)
-        .min(max_distinct_for(target))
-        .max(min);
+    let max = distinct_of(family, target.closed, options.max_points).min(max_distinct_for(target));
     let known = options.known.clone().filter(|k| k.within_tolerance);
     let mut found: Option<(usize, Choice)> =
         known.map(|k| (distinct_of(family, target.closed, k.measure.counted), k));
     // rise until a start meets the tolerance (or up to the known count)
     let top = found.as_ref().map_or(max + 1, |f| f.0);
+    // the best valid configuration seen at any count: the answer when none meets the
+    // tolerance and the largest count has no valid configuration
+    let mut fallback: Option<Choice> = None;
+    // the count whose best start came nearest, for the search when no count succeeds
+    let mut nearest: Option<(f64, usize)> = None;
     for n in min..top {
-        let (best, evals) = starts(target, family, n)?;
+        let (best, e, evals) = starts(target, family, n)?;
         evaluations += evals;
+        if e.is_finite() && nearest.is_none_or(|(b, _)| e < b) {
+            nearest = Some((e, n));
+        }
         if let Some(best) = best.filter(|b| b.within_tolerance) {
             found = Some((n, best));
             break;
@@ -604,6 +633,11 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
             }
             other => {
                 bad = n;
+                if let Some(c) = &other {
+                    if better(c, fallback.as_ref()) {
+                        fallback = Some(c.clone());
+                    }
+                }
                 if failure.is_none() || n == max {
                     failure = other;
                 }
@@ -611,7 +645,17 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
             }
         }
     }
-    let mut choice = match (found, failure) {
+    if found.is_none() && failure.is_none() {
+        // the largest count has no valid configuration (an Angular spline on a polygon, whose
+        // placements with many points have collinear triples): the full search at the count
+        // whose start came nearest
+        if let Some((_, n)) = nearest.filter(|&(_, n)| n != max) {
+            let (choice, evals) = place(target, family, n, options.budget_per_coordinate)?;
+            evaluations += evals;
+            fallback = choice;
+        }
+    }
+    let mut choice = match (found, failure.or(fallback)) {
         (Some((_, c)), _) => c,
         (None, Some(f)) => f,
         (None, None) => {
@@ -643,12 +687,21 @@ fn min_distinct(family: Family, closed: bool) -> usize {
 
 /// Distinct points behind a counted number (the repeats of a closed curve taken off).
 fn distinct_of(family: Family, closed: bool, counted: usize) -> usize {
-    let repeats = match (family, closed) {
+    counted.saturating_sub(repeats(family, closed))
+}
+
+/// The points counted for `distinct` distinct points (repeats of a closed curve added).
+fn counted_of(family: Family, closed: bool, distinct: usize) -> usize {
+    distinct.saturating_add(repeats(family, closed))
+}
+
+/// The repeats a closed curve of the family counts: Angular and cardinal 3, others 1.
+fn repeats(family: Family, closed: bool) -> usize {
+    match (family, closed) {
         (_, false) => 0,
         (Family::Angular | Family::Cardinal, true) => 3,
         (_, true) => 1,
-    };
-    counted.saturating_sub(repeats)
+    }
 }
 
 /// The variables of one search: positions (open targets: the inner ones; the ends are fixed),
@@ -749,7 +802,7 @@ pub const A_STEP: f64 = 0.001;
 /// The initial placements of `n` distinct points (step 1 of the module docs): the one with
 /// the lowest coarse error, measured densely if that error is within the tolerance; and the
 /// evaluations made.
-fn starts(target: &Target, family: Family, n: usize) -> Result<(Option<Choice>, usize)> {
+fn starts(target: &Target, family: Family, n: usize) -> Result<(Option<Choice>, f64, usize)> {
     let mut best: Option<(f64, Layout, Vec<f64>)> = None;
     let mut evaluations = 0;
     let mut scratch = Scratch::default();
@@ -764,9 +817,10 @@ fn starts(target: &Target, family: Family, n: usize) -> Result<(Option<Choice>, 
     }
     match best {
         Some((e, layout, x)) if e <= target.tolerance => {
-            Ok((finish(target, &layout, &x)?, evaluations))
+            Ok((finish(target, &layout, &x)?, e, evaluations))
         }
-        _ => Ok((None, evaluations)),
+        Some((e, ..)) => Ok((None, e, evaluations)),
+        None => Ok((None, f64::INFINITY, evaluations)),
     }
 }
 

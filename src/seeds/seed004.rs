@@ -222,16 +222,18 @@ pub fn paper_points(shape: &Shape, method: &Method, count: usize) -> Result<Poin
             let mut points = Vec::new();
             for k in 0..4 {
                 let c = corners[k];
-                let prev = corners[(k + 3) % 4];
-                let next = corners[(k + 1) % 4];
-                points.push(c + (prev - c).normalize() * e);
-                points.push(c);
-                points.push(c + (next - c).normalize() * e);
+                let back = (corners[(k + 3) % 4] - c).normalize();
+                let ahead = (corners[(k + 1) % 4] - c).normalize();
+                // the quarter circle of radius e tangent to both sides at the side points:
+                // centre c + e(back + ahead), its midpoint e(1 − 1/√2)(back + ahead) from c
+                let (p, q) = (c + back * e, c + ahead * e);
+                let mid = c + (back + ahead) * (e * (1.0 - std::f64::consts::FRAC_1_SQRT_2));
+                points.extend([p, mid, q]);
             }
             return Ok(PointSet {
                 points,
                 closed,
-                rule: "each corner with a point on either side (clustered at the corners)",
+                rule: "each corner rounded: a point on either side and the midpoint of the quarter circle tangent there (clustered at the corners; the corner itself would make a collinear triple, which has no G¹ Angular piece)",
             });
         }
         if let (Shape::Rectangle { .. }, Method::Cardinal { .. }) = (shape, method) {

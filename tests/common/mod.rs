@@ -88,9 +88,27 @@ pub fn exact_segment_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>)
     root * half * 2f64.powi((e - e / 2) as i32)
 }
 
-/// Distance from `x` to the polyline `line`: the minimum of the exact segment distances
-/// ([`exact_segment_distance`]); the test-side reference for curve errors.
+/// Distance from `x` to the polyline `line` (the textbook point-to-segment formula in `f64`,
+/// a zero-length segment measured to its point): the test-side reference for curve errors
+/// at ordinary magnitudes.
 pub fn distance_to_polyline(line: &[Vector2<f64>], x: Vector2<f64>) -> f64 {
+    line.windows(2)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let len2 = (b - a).norm_squared();
+            let t = if len2 > 0.0 {
+                ((x - a).dot(&(b - a)) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            ((x - a) - (b - a) * t).norm()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Distance from `x` to the polyline `line` as the minimum of the exact segment distances
+/// ([`exact_segment_distance`]): the reference at every magnitude (slow).
+pub fn exact_distance_to_polyline(line: &[Vector2<f64>], x: Vector2<f64>) -> f64 {
     line.windows(2)
         .map(|w| exact_segment_distance(x, w[0], w[1]))
         .fold(f64::INFINITY, f64::min)
