@@ -359,3 +359,54 @@ fn torus_grid_tabulation_equals_pointwise() {
         }
     }
 }
+
+/// Issue 23, class 5: outside a very short domain the span's power form was extrapolated a
+/// million widths away (knots `[0,1,2,3,3+1e-9,4,5,6]`, degree 3, at 2.999: 1e-2 from
+/// `point()` on the earlier code). Outside the domain the batch evaluates as the single
+/// point does: the same value exactly, for B-spline and NURBS curves, sorted or not.
+#[test]
+fn outside_the_domain_the_batch_is_the_single_evaluation() {
+    let k = vec![0.0, 1.0, 2.0, 3.0, 3.0 + 1e-9, 4.0, 5.0, 6.0];
+    let basis = BSplineBasis::try_new(KnotVector::try_new(k).unwrap(), 3).unwrap();
+    let points = vec![
+        Vector2::new(0.0, 1.0),
+        Vector2::new(2.0, -1.0),
+        Vector2::new(3.0, 4.0),
+        Vector2::new(-1.0, 0.5),
+    ];
+    let curve = BSplineCurve::try_new(basis.clone(), points.clone()).unwrap();
+    let nurbs = NurbsCurve::try_new(basis, points, vec![1.0, 2.0, 0.5, 1.5]).unwrap();
+    let ts = [
+        2.999,
+        -1e3,
+        3.0,
+        3.0 + 5e-10,
+        3.0 + 1e-9,
+        3.1,
+        7.0,
+        2.999,
+        3.0 + 2e-10,
+        1e6,
+        -0.0,
+    ];
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    curve.eval_many(&ts, &mut a);
+    nurbs.eval_many(&ts, &mut b);
+    for (i, &t) in ts.iter().enumerate() {
+        let (lo, hi) = curve.domain();
+        if !(lo..=hi).contains(&t) {
+            assert_eq!(a[i], curve.point(t), "B-spline at {t}");
+            assert_eq!(b[i], nurbs.point(t), "NURBS at {t}");
+        } else {
+            let scale = 4.0;
+            assert!(
+                (a[i] - curve.point(t)).amax() <= tol_batch(3) * scale,
+                "B-spline at {t}"
+            );
+            assert!(
+                (b[i] - nurbs.point(t)).amax() <= 2.0 * tol_batch(3) * scale,
+                "NURBS at {t}"
+            );
+        }
+    }
+}

@@ -224,8 +224,16 @@ fn walk_part<T, P>(
             .unwrap_or(ts.len() - i - 1);
         let (chunk, slots) = (&ts[i..i + run], &mut out[i..i + run]);
         match &data {
+            // only the run's first parameter can lie outside the span (beyond the domain's
+            // ends, or its right end): there the power form would be extrapolated far from
+            // where its accuracy holds (|s| ≫ 1 multiplies its rounding by |s|ᵖ), so it is
+            // evaluated as `ParametricCurve::eval` does — batch and single agree everywhere
             Some(d) => {
-                for (o, &t) in slots.iter_mut().zip(chunk) {
+                let first = usize::from(!(lo <= chunk[0] && chunk[0] <= hi));
+                if first == 1 {
+                    slots[0] = fallback(direct, cursor.span(), chunk[0]);
+                }
+                for (o, &t) in slots[first..].iter_mut().zip(&chunk[first..]) {
                     *o = at(d, (t - lo) * inv);
                 }
             }
