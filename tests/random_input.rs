@@ -2597,3 +2597,171 @@ fn check_cubic_curve<const N: usize>(
     )?;
     Ok(())
 }
+
+// ------------------------------------------------------------------------------------------
+// issue 23: distances, the point search, the figure builders
+// ------------------------------------------------------------------------------------------
+
+#[path = "common/mod.rs"]
+#[allow(dead_code)]
+mod common;
+
+/// A shape (polyline) of a few points at one random magnitude, for the search target.
+fn small_outline() -> impl Strategy<Value = (Vec<Vector2<f64>>, bool)> {
+    (
+        vec((-1.0f64..1.0, -1.0f64..1.0), 3..=7),
+        -300i32..=300,
+        prop::bool::ANY,
+    )
+        .prop_map(|(raw, e, closed)| {
+            let m = 10f64.powi(e);
+            (
+                raw.into_iter()
+                    .map(|(x, y)| Vector2::new(x, y) * m)
+                    .collect(),
+                closed,
+            )
+        })
+}
+
+static FIGURE_HUNG: AtomicBool = AtomicBool::new(false);
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Distances against the exact rational reference in rescaled coordinates, at
+    /// magnitudes 1e-300 … 1e300 (points anywhere, and points within 1e-6 of the segment's
+    /// size from it): exact to rounding of the distance itself; the polyline distances are
+    /// the brute-force minimum of the same kernel.
+    #[test]
+    fn distances_are_exact_at_every_magnitude(
+        e in -300i32..=300,
+        v in prop::array::uniform6(-1.0f64..1.0),
+        near in 0.0f64..1.0,
+        more in vec((-1.0f64..1.0, -1.0f64..1.0), 1..6),
+    ) {
+        guard(|| {
+            use splinelab::curve_metrics::{segment_distance, SegmentTree};
+            let m = 10f64.powi(e);
+            let (a, b) = (Vector2::new(v[0], v[1]) * m, Vector2::new(v[2], v[3]) * m);
+            let p = if near < 0.5 {
+                a + (b - a) * (2.0 * near) + Vector2::new(v[4], v[5]) * (m * 1e-6)
+            } else {
+                Vector2::new(v[4], v[5]) * m
+            };
+            let d = segment_distance(p, a, b);
+            let exact = common::exact_segment_distance(p, a, b);
+            prop_assert!(common::distance_close(d, exact, 4.0 * m), "{:?} {:?} {:?}: {} vs exact {}", p, a, b, d, exact);
+            let line: Vec<Vector2<f64>> = std::iter::once(a).chain(std::iter::once(b)).chain(more.iter().map(|&(x, y)| Vector2::new(x, y) * m)).collect();
+            let tree = SegmentTree::new(&line).unwrap();
+            let brute = line.windows(2).map(|w| segment_distance(p, w[0], w[1])).fold(f64::INFINITY, f64::min);
+            prop_assert_eq!(tree.distance(p), brute);
+            Ok(())
+        })?;
+    }
+
+    /// The point search on small outlines at any magnitude: a typed error or a choice that
+    /// counts at most `max_points`, valid for its method, whose reported error is what an
+    /// independent measure of its curve gives (brute-force distances between the sampled
+    /// curve and the outline).
+    #[test]
+    fn the_point_search_keeps_its_bounds((outline, closed) in small_outline(), family in 0usize..5, max_points in 0usize..9) {
+        use splinelab::curve_metrics::{sample_pieces, segment_distance};
+        use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target, FINAL_SAMPLES};
+        let family = [Family::Angular, Family::Cardinal, Family::Cubic, Family::BSpline, Family::Linear][family];
+        guard(|| {
+            let size = outline.iter().map(|p| p.amax()).fold(0.0, f64::max);
+            let Ok(target) = Target::polyline(&outline, closed, 0.05 * size) else {
+                return Ok(());
+            };
+            let options = SearchOptions { max_points, budget_per_coordinate: 2, known: None };
+            let Ok(c) = fewest_points(&target, family, &options) else {
+                return Ok(());
+            };
+            prop_assert!(c.measure.counted <= max_points, "{} > {}", c.measure.counted, max_points);
+            let curve = c.method.curve(&c.points, target.is_closed());
+            prop_assert!(curve.is_ok(), "the chosen configuration does not build: {:?}", curve.err());
+            let curve = curve.unwrap();
+            let line = sample_pieces(&curve, &curve.breaks(), FINAL_SAMPLES).unwrap();
+            let reference = target.reference();
+            let to = |from: &[Vector2<f64>], onto: &[Vector2<f64>]| {
+                from.iter()
+                    .map(|&x| onto.windows(2).map(|w| segment_distance(x, w[0], w[1])).fold(f64::INFINITY, f64::min))
+                    .fold(0.0, f64::max)
+            };
+            let brute = to(&line, reference).max(to(reference, &line));
+            let reported = c.measure.distances.hausdorff();
+            prop_assert!((brute - reported).abs() <= 1e-9 * brute.max(size) + FLOOR, "reported {} vs recomputed {}", reported, brute);
+            prop_assert_eq!(c.within_tolerance, reported <= target.tolerance());
+            Ok(())
+        })?;
+    }
+
+    /// The figure builders never panic or hang on any data, finite or not: a plane figure
+    /// of lines, marks and notes (any styles and sizes, fixed ranges, log axes, equal
+    /// aspect) and a 3-D scene each draw as SVG or return a typed error.
+    #[test]
+    fn figures_draw_any_data(
+        pts in vec((num(), num()), 0..12),
+        range in prop::option::of((num(), num())),
+        flags in prop::array::uniform4(prop::bool::ANY),
+        mark in prop_oneof![Just(0u32), 1u32..20, Just(u32::MAX)],
+        size in (0u32..20_000, 0u32..20_000),
+        layout in (0usize..4, 0usize..4),
+        view in prop::array::uniform3(num()),
+    ) {
+        use plotters::prelude::RGBColor;
+        use splinelab::report::figure::{Drawing, Figure};
+        use splinelab::report::plot2d::{Figure2d, Panel, Series, Style};
+        use splinelab::report::render3d::{Figure3d, Marker, Quad, Scene, Segment, View};
+        let what = format!("figures over {pts:?}");
+        guard_with_watchdog(&FIGURE_HUNG, what, move || {
+            let mut panel = Panel::new("random", "x", "y")
+                .with(Series::line("l", pts.clone(), RGBColor(0, 0, 0)).width(mark))
+                .with(Series::line("p", pts.clone(), RGBColor(9, 9, 9)).styled(Style::Points(mark)))
+                .with(Series::line("c", pts.clone(), RGBColor(9, 9, 9)).styled(Style::Crosses(mark)))
+                .with(Series::line("d", pts.clone(), RGBColor(9, 9, 9)).styled(Style::Dashed))
+                .log(flags[0], flags[1]);
+            if flags[2] {
+                panel = panel.equal();
+            }
+            if let Some((lo, hi)) = range {
+                panel = panel.x_range(lo, hi).y_range(hi, lo);
+            }
+            for &(x, y) in pts.iter().take(2) {
+                panel = panel.note(x, y, "n");
+            }
+            let mut plane = Figure2d::new("random", vec![panel.clone(), panel], layout);
+            if flags[3] {
+                plane = plane.shared_legend();
+            }
+            let fig = Figure::new(Drawing::Plane(plane)).with_size(size.0, size.1);
+            match fig.to_svg() {
+                Ok(svg) => prop_assert!(svg.contains("<svg")),
+                Err(e) => prop_assert!(matches!(e, splinelab::report::Error::Figure { .. }), "{:?}", e),
+            }
+            // rasterised too (the bitmap backend loops over pixels), small
+            if let Err(e) = fig.clone().with_size(120, 90).to_rgb() {
+                prop_assert!(matches!(e, splinelab::report::Error::Figure { .. }), "{:?}", e);
+            }
+            let p3 = |k: usize| {
+                let (x, y) = pts.get(k % pts.len().max(1)).copied().unwrap_or((0.0, 1.0));
+                Vector3::new(x, y, x - y)
+            };
+            let mut scene = Scene::default();
+            scene.quads.push(Quad { corners: [p3(0), p3(1), p3(2), p3(3)], color: RGBColor(1, 2, 3), alpha: 0.5 });
+            scene.segments.push(Segment { a: p3(4), b: p3(5), color: RGBColor(1, 2, 3), width: mark, arrow: true });
+            scene.markers.push(Marker { at: p3(6), color: RGBColor(1, 2, 3), radius: mark });
+            let view = View { yaw: view[0], pitch: view[1], scale: view[2] };
+            let fig = Figure::new(Drawing::Scene(Figure3d { title: "random".into(), scene, view }));
+            match fig.to_svg() {
+                Ok(svg) => prop_assert!(svg.contains("<svg")),
+                Err(e) => prop_assert!(matches!(e, splinelab::report::Error::Figure { .. }), "{:?}", e),
+            }
+            if let Err(e) = fig.with_size(120, 90).to_rgb() {
+                prop_assert!(matches!(e, splinelab::report::Error::Figure { .. }), "{:?}", e);
+            }
+            Ok(())
+        })?;
+    }
+}

@@ -541,17 +541,17 @@ fn clip_segment(
     if !(t0 <= t1) {
         return None;
     }
+    // the ends exactly where they are inside; every point clamped to the box, so rounding
+    // of the parameters cannot leave one outside
     let at = |t: f64| {
-        if t == 0.0 {
+        let (x, y) = if t == 0.0 {
             a
         } else if t == 1.0 {
             b
         } else {
-            (
-                (2.0 * (ha.0 + t * dx)).clamp(x0, x1),
-                (2.0 * (ha.1 + t * dy)).clamp(y0, y1),
-            )
-        }
+            (2.0 * (ha.0 + t * dx), 2.0 * (ha.1 + t * dy))
+        };
+        (x.clamp(x0, x1), y.clamp(y0, y1))
     };
     Some((at(t0), at(t1)))
 }
