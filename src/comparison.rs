@@ -8,7 +8,7 @@
 //! [`REFERENCE_SEGMENTS`] segments, within the tolerance of 1 % of the shape's larger
 //! bounding-box side ([`crate::shapes::TOLERANCE_FRACTION`], spec decision A12).
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::interp::choice::{fewest_points, Choice, Family, Measure, SearchOptions, Target};
 use crate::interp::methods::Method;
 use crate::seeds::seed004::{paper_points, PrintedCell, SHAPES, TABLE_I};
@@ -168,10 +168,14 @@ impl CellStudy {
 /// field is set from the paper's rule).
 ///
 /// # Errors
-/// The errors of [`paper_points`], [`Target::shape`], [`Target::measure`] and
-/// [`fewest_points`].
+/// [`Error::IndexOutOfRange`] for a cell whose column names no shape of [`SHAPES`]; the
+/// errors of [`paper_points`], [`Target::shape`], [`Target::measure`] and [`fewest_points`].
 pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStudy> {
-    let (column, shape) = SHAPES[cell.column.min(SHAPES.len() - 1)];
+    let (column, shape) = *SHAPES.get(cell.column).ok_or(Error::IndexOutOfRange {
+        what: "Table I shape column",
+        index: cell.column,
+        len: SHAPES.len(),
+    })?;
     let target = Target::shape(&shape, REFERENCE_SEGMENTS)?;
     let tolerance = target.tolerance();
     let configure = |count: usize| -> Result<Configuration> {

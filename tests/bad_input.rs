@@ -95,7 +95,7 @@ const CHILD_PARALLELISM: usize = 2;
 /// buffer fails (and aborts the child, which is reported) instead of exhausting the machine.
 const CHILD_MEMORY_KIB: u64 = 8 * 1024 * 1024;
 /// The policy's lower bound on the number of cases.
-const MIN_CASES: usize = 120;
+const MIN_CASES: usize = 396;
 
 #[derive(Clone, Copy)]
 struct Case {
@@ -4512,8 +4512,8 @@ fn report_cases() -> Vec<Case> {
             "figure::huge_size_is_clamped_and_drawn_within_memory",
             || {
                 let fig = ok(report::figure("fig-bspline-bases"))?.with_size(u32::MAX, 0);
-                if fig.size != (splinelab::report::figure::MAX_SIDE, 64) {
-                    return Err(format!("size {:?}", fig.size));
+                if fig.size() != (splinelab::report::figure::MAX_SIDE, 64) {
+                    return Err(format!("size {:?}", fig.size()));
                 }
                 ok(fig.to_rgb()).map(drop)
             },
@@ -4749,8 +4749,18 @@ fn seed004_cases() -> Vec<Case> {
             ])
         }),
         case("seed004::angular_backtrack_on_line", || {
-            // P₀ lies on the chord between P₁ and P₂: φ = π, a straight piece
-            angular_ok(vec![v2(0.5, 0.0), v2(0.0, 0.0), v2(1.0, 0.0), v2(2.0, 1.0)])
+            // P₀ lies on the chord between P₁ and P₂: the tangent at P₁ points back along the
+            // chord (φ = π), a spike in the limit, no G¹ piece (issue 23: it was a straight
+            // piece meeting its neighbour at a cusp)
+            expect_err!(
+                AngularSpline::try_new(vec![
+                    v2(0.5, 0.0),
+                    v2(0.0, 0.0),
+                    v2(1.0, 0.0),
+                    v2(2.0, 1.0)
+                ]),
+                Error::NoSmoothPiece { point: 1, .. }
+            )
         }),
         case("seed004::angular_closed_two_points", || {
             expect_err!(
@@ -4975,6 +4985,11 @@ fn seed004_cases() -> Vec<Case> {
     ]
 }
 
+// the cases of the API added with seed 004 and issue 13 (methods, shapes, curve metrics,
+// point choice, comparison, refit, figures), in their own file
+#[path = "bad_input/new_api.rs"]
+mod new_api;
+
 fn all_cases() -> Vec<Case> {
     let mut all = Vec::new();
     all.extend(domain_cases());
@@ -4995,6 +5010,7 @@ fn all_cases() -> Vec<Case> {
     all.extend(seed004_cases());
     all.extend(symbolic_cases());
     all.extend(fast_path_cases());
+    all.extend(new_api::cases());
     all
 }
 

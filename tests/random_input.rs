@@ -2603,7 +2603,6 @@ fn check_cubic_curve<const N: usize>(
 // ------------------------------------------------------------------------------------------
 
 #[path = "common/mod.rs"]
-#[allow(dead_code)]
 mod common;
 
 /// A shape (polyline) of a few points at one random magnitude, for the search target.

@@ -343,15 +343,23 @@ pub fn circumcircle(
     b: Vector2<f64>,
     c: Vector2<f64>,
 ) -> Option<(Vector2<f64>, f64)> {
-    // relative to a, so the determinant keeps its digits far from the origin
+    // relative to a, so the determinant keeps its digits far from the origin, and in units
+    // of a power of two near the differences' size (exact), so no square or product
+    // underflows or overflows whatever the points' magnitude
     let (u, v) = (b - a, c - a);
+    let m = u.amax().max(v.amax());
+    if m == 0.0 || !m.is_finite() {
+        return None;
+    }
+    let unit = 2f64.powi(m.log2().floor().clamp(-1022.0, 1023.0) as i32);
+    let (u, v) = (u / unit, v / unit);
     let d = 2.0 * u.perp(&v);
     if d == 0.0 || !d.is_finite() {
         return None;
     }
     let (uu, vv) = (u.norm_squared(), v.norm_squared());
     let centre = Vector2::new(v.y * uu - u.y * vv, u.x * vv - v.x * uu) / d;
-    let r = hypot(centre);
+    let (centre, r) = (centre * unit, hypot(centre) * unit);
     (r.is_finite() && centre.iter().all(|x| x.is_finite())).then_some((a + centre, r))
 }
 

@@ -563,16 +563,7 @@ impl Default for SearchOptions {
 /// the returned configuration.
 pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -> Result<Choice> {
     crate::error::size("maximum point count", options.max_points)?;
-    let min = if family == Family::BSpline {
-        // the fewest vertices of the fit (a closed polygon's closing vertex counted once)
-        if target.closed {
-            4
-        } else {
-            2
-        }
-    } else {
-        counted_of(family, target.closed, min_distinct(family, target.closed))
-    };
+    let min = fewest_counted(family, target.closed);
     if options.max_points < min {
         return Err(Error::TooFewPoints {
             what: "maximum point count of the search (the family's fewest on this target)",
@@ -589,7 +580,7 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     // a segment: a polygon's sides need them), which bounds the search's cost for any
     // `max_points`
     let max = distinct_of(family, target.closed, options.max_points).min(max_distinct_for(target));
-    let known = options.known.clone().filter(|k| k.within_tolerance);
+    let known = checked_known(target, options)?;
     let mut found: Option<(usize, Choice)> =
         known.map(|k| (distinct_of(family, target.closed, k.measure.counted), k));
     // rise until a start meets the tolerance (or up to the known count)
@@ -669,6 +660,32 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
     Ok(choice)
 }
 
+/// The known configuration of `options`, measured again on `target` (its fields are public,
+/// so nothing it claims is trusted): `None` unless it builds, meets the tolerance and counts
+/// at least the family's fewest and at most `max_points`.
+///
+/// # Errors
+/// The errors of [`Target::measure`] for a known configuration that does not build (NaN
+/// points, say).
+fn checked_known(target: &Target, options: &SearchOptions) -> Result<Option<Choice>> {
+    let Some(k) = &options.known else {
+        return Ok(None);
+    };
+    let measure = target.measure(&k.method, &k.points)?;
+    let within = measure.distances.hausdorff() <= target.tolerance;
+    let counted = measure.counted;
+    let min = Family::of(&k.method).map_or(0, |f| fewest_counted(f, target.closed));
+    Ok(
+        (within && counted >= min && counted <= options.max_points).then(|| Choice {
+            method: k.method,
+            points: k.points.clone(),
+            within_tolerance: true,
+            measure,
+            evaluations: k.evaluations,
+        }),
+    )
+}
+
 /// The most distinct points the search tries on `target`: four per reference vertex, at
 /// least 64.
 pub fn max_distinct_for(target: &Target) -> usize {
@@ -688,6 +705,16 @@ fn min_distinct(family: Family, closed: bool) -> usize {
 /// Distinct points behind a counted number (the repeats of a closed curve taken off).
 fn distinct_of(family: Family, closed: bool, counted: usize) -> usize {
     counted.saturating_sub(repeats(family, closed))
+}
+
+/// The fewest points a family counts: the B-spline fit's fewest vertices (4 closed, the
+/// closing one counted once; 2 open), else [`min_distinct`] with the closed curve's repeats.
+fn fewest_counted(family: Family, closed: bool) -> usize {
+    match (family, closed) {
+        (Family::BSpline, true) => 4,
+        (Family::BSpline, false) => 2,
+        _ => counted_of(family, closed, min_distinct(family, closed)),
+    }
 }
 
 /// The points counted for `distinct` distinct points (repeats of a closed curve added).
@@ -1187,7 +1214,7 @@ fn fewest_bspline(target: &Target, options: &SearchOptions) -> Result<Choice> {
     let mut evaluations = 0;
     let mut best: Option<Choice> = None;
     let min_vertices = if closed { 4 } else { 2 };
-    let known = options.known.clone().filter(|k| k.within_tolerance);
+    let known = checked_known(target, options)?;
     let max_vertices = known
         .as_ref()
         .map(|k| k.measure.counted.saturating_sub(1))

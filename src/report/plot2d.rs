@@ -538,7 +538,7 @@ fn clip_segment(
             }
         }
     }
-    if !(t0 <= t1) {
+    if t0.is_nan() || t1.is_nan() || t0 > t1 {
         return None;
     }
     // the ends exactly where they are inside; every point clamped to the box, so rounding

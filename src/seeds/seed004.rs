@@ -222,14 +222,17 @@ pub fn paper_points(shape: &Shape, method: &Method, count: usize) -> Result<Poin
             let mut points = Vec::new();
             for k in 0..4 {
                 let c = corners[k];
-                let back = (corners[(k + 3) % 4] - c).normalize();
-                let ahead = (corners[(k + 1) % 4] - c).normalize();
+                // unit directions scaled first, so tiny sides do not underflow
+                let unit = |v: Vector2<f64>| (v / v.amax()).normalize();
+                let back = unit(corners[(k + 3) % 4] - c);
+                let ahead = unit(corners[(k + 1) % 4] - c);
                 // the quarter circle of radius e tangent to both sides at the side points:
                 // centre c + e(back + ahead), its midpoint e(1 − 1/√2)(back + ahead) from c
                 let (p, q) = (c + back * e, c + ahead * e);
                 let mid = c + (back + ahead) * (e * (1.0 - std::f64::consts::FRAC_1_SQRT_2));
                 points.extend([p, mid, q]);
             }
+            crate::error::derived_points("Angular rectangle points", &points)?;
             return Ok(PointSet {
                 points,
                 closed,
