@@ -589,10 +589,14 @@ pub fn choice(
 
 /// A comparison of interpolation methods over one shape: one [`interpolation`] panel per
 /// `(method, points, closed)`, titled with the method and its point count as the paper counts
-/// them, `layout = (rows, cols)`, one legend for all.
+/// them, `layout = (rows, cols)`, one legend for all. Points through which the method has no
+/// smooth curve ([`crate::Error::NoSmoothPiece`]: an Angular spline through collinear points
+/// beside a turn, say) get a panel of the shape and the points with the refusal written under
+/// it: that is the answer for those points.
 ///
 /// # Errors
-/// The method's construction errors; as [`ParametricCurve::polyline`].
+/// The method's other construction errors (a bad parameter, too few or non-finite points); as
+/// [`ParametricCurve::polyline`].
 pub fn methods(
     title: impl Into<String>,
     reference: &[Vector2<f64>],
@@ -602,16 +606,37 @@ pub fn methods(
     let panels = cases
         .iter()
         .map(|(method, points, closed)| {
-            let curve = method.curve(points, *closed)?;
             let counted = method.counted_points(points.len(), *closed);
             let drawn = method.prepared(points, *closed);
-            interpolation(
-                format!("{} — {counted} points", method.label()),
-                reference,
-                &drawn,
-                matches!(method, crate::Method::BSpline { .. }),
-                &curve,
-            )
+            let title = format!("{} — {counted} points", method.label());
+            match method.curve(points, *closed) {
+                Ok(curve) => interpolation(
+                    title,
+                    reference,
+                    &drawn,
+                    matches!(method, crate::Method::BSpline { .. }),
+                    &curve,
+                ),
+                Err(e @ crate::Error::NoSmoothPiece { .. }) => {
+                    let mut panel = Panel::new(format!("{title}: refused"), "", "")
+                        .equal()
+                        .with(
+                            Series::line("shape", xy(reference), crate::report::plot2d::GREY)
+                                .styled(Style::Dashed)
+                                .width(1),
+                        )
+                        .with(Series::line("points", xy(&drawn), INK).styled(Style::Crosses(5)));
+                    // the error's first clause (which piece, which rule): a line a reader
+                    // can read under the panel; the whole message is the API's
+                    let message = e.to_string();
+                    panel.x_label = match message.split_once(": ") {
+                        Some((head, _)) if message.chars().count() > 90 => head.to_string(),
+                        _ => message,
+                    };
+                    Ok(panel)
+                }
+                Err(e) => Err(e.into()),
+            }
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(Figure2d::new(title, panels, layout).shared_legend().into())
