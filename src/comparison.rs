@@ -87,6 +87,9 @@ pub enum Verdict {
     Fewer,
     /// More points than printed.
     More,
+    /// No configuration the search tried, up to its largest count, meets the tolerance: the
+    /// count needed is not known (the study reports the smallest error it found).
+    NoneWithin,
 }
 
 impl Verdict {
@@ -96,6 +99,7 @@ impl Verdict {
             Verdict::Agrees => "agrees",
             Verdict::Fewer => "fewer",
             Verdict::More => "more",
+            Verdict::NoneWithin => "none within 1 %",
         }
     }
 }
@@ -108,6 +112,7 @@ impl CellStudy {
         let printed = self.cell.points;
         let ours = self.automatic.measure.counted;
         let verdict = match ours.cmp(&printed) {
+            _ if !self.automatic.within_tolerance => Verdict::NoneWithin,
             std::cmp::Ordering::Equal => Verdict::Agrees,
             std::cmp::Ordering::Less => Verdict::Fewer,
             std::cmp::Ordering::Greater => Verdict::More,
@@ -156,9 +161,10 @@ impl CellStudy {
                 "no placement found with fewer than {ours} meets 1 % (our tolerance is stricter than the paper's eye, or the search is local)"
             )),
             Verdict::Agrees => {}
-        }
-        if !self.automatic.within_tolerance {
-            why.push(format!("none up to {MAX_POINTS} points meets 1 %"));
+            Verdict::NoneWithin => why.push(format!(
+                "no configuration found up to {MAX_POINTS} points meets 1 %; auto_* shows the smallest error found ({:.2} % with {ours})",
+                pct(self.automatic.measure.distances.hausdorff())
+            )),
         }
         (verdict, why.join("; "))
     }

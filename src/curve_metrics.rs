@@ -69,12 +69,17 @@ fn two_prod(x: f64, y: f64) -> (f64, f64) {
 }
 
 /// A power of two near `m > 0` (finite), as a double: `2^⌊log₂ m⌋`, or 1 for `m = 0`.
+#[inline]
 fn power_near(m: f64) -> f64 {
     if m == 0.0 || !m.is_finite() {
         return 1.0;
     }
-    let e = m.log2().floor().clamp(-1022.0, 1023.0) as i32;
-    2f64.powi(e)
+    if m.abs() < f64::MIN_POSITIVE {
+        // subnormal: the smallest normal power, whose reciprocal is finite
+        return f64::MIN_POSITIVE;
+    }
+    // a normal double with its significand cleared is 2^⌊log₂ |m|⌋ (the sign dropped)
+    f64::from_bits(m.abs().to_bits() & 0x7ff0_0000_0000_0000)
 }
 
 /// [`segment_distance`] for coordinates at most `f64::MAX / 4` in magnitude (so the
@@ -256,8 +261,8 @@ impl SegmentTree {
         self.nearest(p, 0.0)
     }
 
-    /// The distance from `p` to the polyline, except that the search may stop and return
-    /// any distance below `stop` as soon as it finds one.
+    /// The distance from `p` to the polyline, except that the search may stop as soon as it
+    /// knows the distance is below `stop` and return a bound below `stop` instead.
     ///
     /// The search prunes with the plain squared distance in units of a power of two near the
     /// coordinates' size (so no square overflows, and only squares far below the size
@@ -289,8 +294,15 @@ impl SegmentTree {
                 let first = node.first as usize;
                 for &i in &self.order[first..first + node.count as usize] {
                     let (a, b) = (self.points[i as usize], self.points[i as usize + 1]);
-                    if cheap_distance2(q, a * k, b * k) > limit {
+                    let c2 = cheap_distance2(q, a * k, b * k);
+                    if c2 > limit {
                         continue;
+                    }
+                    // the exact distance is at most the plain one plus `reach`: below `stop`,
+                    // the caller needs no exact value
+                    let c = c2.sqrt() + reach;
+                    if c < stop {
+                        return c * u;
                     }
                     let d = segment_distance(p, a, b) * k;
                     if d < best {

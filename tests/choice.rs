@@ -6,7 +6,7 @@ mod common;
 
 use common::hausdorff;
 use nalgebra::Vector2;
-use splinelab::comparison::{study_cell, table_i, REFERENCE_SEGMENTS};
+use splinelab::comparison::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
 use splinelab::curve_metrics::sample_pieces;
 use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target, FINAL_SAMPLES};
 use splinelab::interp::methods::{CubicEnd, Method};
@@ -61,9 +61,13 @@ fn automatic_counts_never_exceed_the_paper_rule_and_their_errors_hold() {
             // valid configuration, honestly out of tolerance
             assert!(!auto.within_tolerance, "cell {index}: {auto:?}");
             assert!(auto.measure.distances.hausdorff() > study.tolerance);
+            // and the verdict does not call its count "fewer" (or any count at all)
+            assert_eq!(study.verdict().0, Verdict::NoneWithin, "cell {index}");
+            assert!(study.verdict().1.contains("no configuration found"));
             continue;
         }
         assert!(auto.within_tolerance, "cell {index}: {auto:?}");
+        assert_ne!(study.verdict().0, Verdict::NoneWithin, "cell {index}");
         if let Some(rule) = &study.paper_rule {
             assert!(
                 auto.measure.counted <= rule.measure.counted,

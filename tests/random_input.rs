@@ -2623,6 +2623,7 @@ fn small_outline() -> impl Strategy<Value = (Vec<Vector2<f64>>, bool)> {
         })
 }
 
+#[cfg(feature = "report")]
 static FIGURE_HUNG: AtomicBool = AtomicBool::new(false);
 
 proptest! {
@@ -2699,6 +2700,7 @@ proptest! {
     /// The figure builders never panic or hang on any data, finite or not: a plane figure
     /// of lines, marks and notes (any styles and sizes, fixed ranges, log axes, equal
     /// aspect) and a 3-D scene each draw as SVG or return a typed error.
+    #[cfg(feature = "report")]
     #[test]
     fn figures_draw_any_data(
         pts in vec((num(), num()), 0..12),
