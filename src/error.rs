@@ -281,6 +281,20 @@ pub enum Error {
         /// Why.
         reason: &'static str,
     },
+    /// A formula captured from a trace does not equal the value the trace computed, at the
+    /// trace point, within the rounding bound of both computations: a simplification (or the
+    /// trace itself) is wrong, so the formula is refused rather than printed.
+    #[error("the formula {formula} gives {evaluated:e} at the trace point, where the traced value is {traced:e} (allowed difference {bound:e}): it is refused")]
+    FormulaCheck {
+        /// The formula, as plain text (shortened if long).
+        formula: String,
+        /// Its value at the trace point.
+        evaluated: f64,
+        /// The value the traced code computed there.
+        traced: f64,
+        /// The largest difference rounding explains.
+        bound: f64,
+    },
     /// Periodic (cyclic) end conditions need data whose first and last values coincide.
     #[error(
         "periodic ends need the first and last data points to coincide; they are {distance} apart"

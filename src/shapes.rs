@@ -214,13 +214,13 @@ impl ParametricCurve<2> for Shape {
             Shape::Rectangle { width, height } => {
                 let corners = rectangle_corners(width, height);
                 let sides = [height, width, height, width];
-                let mut start = 0.0;
-                let x = t.re();
-                let mut k = 0;
-                while k < 3 && x >= start + sides[k] {
-                    start += sides[k];
-                    k += 1;
+                // the sides' parameter intervals; the side of t is one formula
+                let mut nodes = [0.0; 5];
+                for k in 0..4 {
+                    nodes[k + 1] = nodes[k] + sides[k];
                 }
+                let k = crate::symbolic::claim::piece(&nodes, &t);
+                let start = nodes[k];
                 let (a, b) = (corners[k], corners[(k + 1) % 4]);
                 let s = (t - start) / sides[k];
                 Vector2::new(s * (b.x - a.x) + a.x, s * (b.y - a.y) + a.y)

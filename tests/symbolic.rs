@@ -210,9 +210,9 @@ fn torus_partials_are_codice_3s_formulas() {
     // derivatives), as the same eval that computes the numbers traced them; every one is
     // also checked by evaluation below
     let expected = [
-        ["(2 + cos(t))*cos(s)", "(2 + cos(t))*sin(s)", "sin(t)"],
+        ["cos(s)*(2 + cos(t))", "sin(s)*(2 + cos(t))", "sin(t)"],
         ["-sin(s)*(2 + cos(t))", "cos(s)*(2 + cos(t))", "0"],
-        ["-sin(t)*cos(s)", "-sin(t)*sin(s)", "cos(t)"],
+        ["-cos(s)*sin(t)", "-sin(s)*sin(t)", "cos(t)"],
         ["sin(s)*sin(t)", "-cos(s)*sin(t)", "0"],
     ];
     for (got, want) in texts.iter().zip(expected) {
@@ -392,7 +392,7 @@ fn a_trace_beyond_the_node_limit_is_a_typed_error() {
 #[test]
 fn torus_formulas_print_as_latex_and_well_formed_mathml() {
     let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7).unwrap();
-    assert_eq!(f.point[0].latex(), "\\left(2 + \\cos(t)\\right) \\cos(s)");
+    assert_eq!(f.point[0].latex(), "\\cos(s) \\left(2 + \\cos(t)\\right)");
     assert_eq!(f.ds[0].latex(), "-\\sin(s) \\left(2 + \\cos(t)\\right)");
     assert_eq!(f.dst[1].latex(), "-\\cos(s) \\sin(t)");
     for p in [&f.point, &f.ds, &f.dt, &f.dst] {
@@ -692,4 +692,246 @@ fn tables_of_formulas_in_latex_and_mathml() {
         "{}",
         p.latex()
     );
+}
+
+// ---- issue 24: a trace that cannot print a wrong formula without an error ----
+
+#[test]
+fn a_stale_handle_combined_with_a_live_one_poisons_the_trace() {
+    let mut first = Trace::new();
+    let old = first.var("x", 1.0) * 2.0 + 1.0;
+    drop(first);
+    let mut second = Trace::new();
+    let y = second.var("y", 3.0);
+    let z = y.sin() * y;
+    let mixed = old + y;
+    // the mixed expression, and every other formula of the trace, are refused
+    assert!(
+        matches!(second.formula(&mixed), Err(Error::Degenerate { .. })),
+        "{:?}",
+        second.formula(&mixed)
+    );
+    assert!(matches!(second.formula(&z), Err(Error::Degenerate { .. })));
+    assert!(matches!(
+        second.formulas(&[y, z]),
+        Err(Error::Degenerate { .. })
+    ));
+    // a new trace starts clean
+    drop(second);
+    let mut third = Trace::new();
+    let w = third.var("w", 0.5);
+    assert_eq!(third.formula(&(w * 2.0)).unwrap().plain(), "2*w");
+}
+
+#[test]
+fn trace_identities_are_unique_across_threads() {
+    // each thread's first trace: with per-thread counters they would share an identity
+    let here = Trace::new();
+    let mut mine = Trace::new();
+    let x = mine.var("x", 1.0);
+    let f = std::thread::spawn(|| {
+        let mut t = Trace::new();
+        let y = t.var("y", 2.0) * 3.0;
+        t.formula(&y).map(|f| f.plain())
+    })
+    .join()
+    .unwrap();
+    assert_eq!(f.unwrap(), "3*y");
+    assert_eq!(mine.formula(&(x + 1.0)).unwrap().plain(), "1 + x");
+    drop(here);
+}
+
+#[test]
+fn a_root_of_a_product_is_not_split_where_its_factors_can_be_negative() {
+    let out = trace([("s", -1.0), ("t", -1.0)], |[s, t]| vec![(s * t).sqrt()]).unwrap();
+    let f = &out.formulas[0];
+    assert_eq!(f.eval(&[-1.0, -1.0]), 1.0, "{f}");
+    assert_eq!(f.plain(), "sqrt(s*t)");
+    // with bases that are positive by their structure the rule fires
+    let out = trace([("s", -1.0), ("t", -1.0)], |[s, t]| {
+        vec![(s.exp() * t.cosh() * 4.0).sqrt()]
+    })
+    .unwrap();
+    assert_eq!(out.formulas[0].plain(), "2*sqrt(exp(s))*sqrt(cosh(t))");
+    assert!(close(
+        out.formulas[0].eval(&[-1.0, -1.0]),
+        (4.0 * (-1.0f64).exp() * 1.0f64.cosh()).sqrt()
+    ));
+}
+
+#[test]
+fn sums_and_products_are_equal_in_any_order() {
+    let out = trace([("x", 0.3), ("y", 0.4)], |[x, y]| {
+        vec![(x + y).sin() - (y + x).sin(), (x * y).cos() - (y * x).cos()]
+    })
+    .unwrap();
+    assert_eq!(out.formulas[0].plain(), "0");
+    assert_eq!(out.formulas[1].plain(), "0");
+    // one print order: the same product prints alike whichever way it was computed
+    let a = trace([("s", 0.3), ("t", 0.7)], |[s, t]| {
+        vec![-(t.sin() * s.cos()), -(s.cos() * t.sin())]
+    })
+    .unwrap();
+    assert_eq!(a.formulas[0].plain(), a.formulas[1].plain());
+    assert_eq!(a.formulas[0].plain(), "-cos(s)*sin(t)");
+}
+
+#[test]
+fn the_angular_spline_beyond_its_end_claims_no_piece() {
+    use nalgebra::Vector2;
+    let points: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 1.0), (2.0, 0.5), (3.0, 2.0), (4.0, 1.0)]
+        .iter()
+        .map(|&(x, y)| Vector2::new(x, y))
+        .collect();
+    let angular = splinelab::AngularSpline::try_new(points).unwrap();
+    let (_, b) = angular.domain();
+    let f = curve_formulas(&angular, b + 1.0).unwrap();
+    // the constant end point is not "the last piece"
+    assert_eq!(f.span, None, "{:?}", f.branches);
+    assert_eq!(f.branches[0], format!("t > {}", number(b)));
+    assert!(f.d1.iter().all(|d| d.as_constant() == Some(0.0)));
+    // inside, the piece the evaluation picked
+    let g = curve_formulas(&angular, 0.25).unwrap();
+    assert_eq!(g.branches[0], "t ∈ [0, 1)");
+}
+
+/// A user's curve that branches on the value of `t` and names no piece.
+struct Kinked;
+
+impl ParametricCurve<1> for Kinked {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> nalgebra::SVector<D, 1> {
+        if t.re() < 0.5 {
+            nalgebra::SVector::<D, 1>::new(t)
+        } else {
+            nalgebra::SVector::<D, 1>::new(t * t)
+        }
+    }
+    fn domain(&self) -> (f64, f64) {
+        (0.0, 1.0)
+    }
+}
+
+#[test]
+fn a_user_curve_that_reads_its_parameter_is_claimed_at_the_trace_point_only() {
+    let f = curve_formulas(&Kinked, 0.75).unwrap();
+    assert_eq!(f.point[0].plain(), "t^2");
+    assert_eq!(f.span, None);
+    assert!(
+        f.branches.iter().any(|b| b.starts_with("only at t = 3/4")),
+        "{:?}",
+        f.branches
+    );
+    let notes = f.table().notes;
+    assert!(
+        notes.iter().any(|n| n.contains("claimed only at t = 3/4")),
+        "{notes:?}"
+    );
+}
+
+/// Random formulas with roots and logarithms of expressions that can be negative (and
+/// products of such): the simplifier must not rewrite them into forms undefined where the
+/// traced value is defined.
+#[derive(Debug, Clone)]
+enum Rooted {
+    Leaf(Tree),
+    Sqrt(Box<Rooted>),
+    SqrtProd(Box<Rooted>, Box<Rooted>),
+    Ln(Box<Rooted>),
+    LnProd(Box<Rooted>, Box<Rooted>),
+    Powf(Box<Rooted>, f64),
+    Mul(Box<Rooted>, Box<Rooted>),
+    Add(Box<Rooted>, Box<Rooted>),
+}
+
+impl Rooted {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> D {
+        match self {
+            Rooted::Leaf(x) => x.eval(s, t),
+            Rooted::Sqrt(a) => a.eval(s, t).sqrt(),
+            Rooted::SqrtProd(a, b) => (a.eval(s, t) * b.eval(s, t)).sqrt(),
+            Rooted::Ln(a) => a.eval(s, t).ln(),
+            Rooted::LnProd(a, b) => (a.eval(s, t) * b.eval(s, t)).ln(),
+            Rooted::Powf(a, p) => a.eval(s, t).powf(*p),
+            Rooted::Mul(a, b) => a.eval(s, t) * b.eval(s, t),
+            Rooted::Add(a, b) => a.eval(s, t) + b.eval(s, t),
+        }
+    }
+
+    /// The smallest `|argument|` of a root or logarithm at `(s, t)` (how near a branch
+    /// point the trace point is).
+    fn nearest_branch(&self, s: f64, t: f64) -> f64 {
+        match self {
+            Rooted::Leaf(_) => f64::INFINITY,
+            Rooted::Sqrt(a) | Rooted::Ln(a) | Rooted::Powf(a, _) => {
+                a.eval(s, t).abs().min(a.nearest_branch(s, t))
+            }
+            Rooted::SqrtProd(a, b) | Rooted::LnProd(a, b) => (a.eval(s, t) * b.eval(s, t))
+                .abs()
+                .min(a.nearest_branch(s, t))
+                .min(b.nearest_branch(s, t)),
+            Rooted::Mul(a, b) | Rooted::Add(a, b) => {
+                a.nearest_branch(s, t).min(b.nearest_branch(s, t))
+            }
+        }
+    }
+}
+
+struct RootedSurface(Rooted);
+
+impl ParametricSurface for RootedSurface {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        let v = self.0.eval(s, t);
+        Vector3::new(v, s, t)
+    }
+}
+
+fn rooted() -> impl Strategy<Value = Rooted> {
+    let leaf = prop_oneof![
+        Just(Rooted::Leaf(Tree::S)),
+        Just(Rooted::Leaf(Tree::T)),
+        (-3i32..=3).prop_map(|k| Rooted::Leaf(Tree::C(k as f64 / 2.0))),
+        tree().prop_map(Rooted::Leaf),
+    ];
+    leaf.prop_recursive(3, 12, 2, |inner| {
+        prop_oneof![
+            inner.clone().prop_map(|a| Rooted::Sqrt(Box::new(a))),
+            (inner.clone(), inner.clone())
+                .prop_map(|(a, b)| Rooted::SqrtProd(Box::new(a), Box::new(b))),
+            inner.clone().prop_map(|a| Rooted::Ln(Box::new(a))),
+            (inner.clone(), inner.clone())
+                .prop_map(|(a, b)| Rooted::LnProd(Box::new(a), Box::new(b))),
+            (
+                inner.clone(),
+                prop_oneof![Just(0.5), Just(1.5), Just(-0.5), Just(1.0 / 3.0)]
+            )
+                .prop_map(|(a, p)| Rooted::Powf(Box::new(a), p)),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| Rooted::Mul(Box::new(a), Box::new(b))),
+            (inner.clone(), inner).prop_map(|(a, b)| Rooted::Add(Box::new(a), Box::new(b))),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Roots and logarithms of expressions of any sign: every formula is captured (the
+    /// capture check passes) and equals the hyper-dual value at the trace point wherever
+    /// that value is finite — never a NaN formula for a defined value.
+    #[test]
+    fn roots_and_logs_of_negative_expressions_keep_their_values(
+        r in rooted(), s in -2.0f64..2.0, t in -2.0f64..2.0,
+    ) {
+        prop_assume!(r.nearest_branch(s, t) > 1e-3);
+        let surface = RootedSurface(r);
+        let f = surface_formulas(&surface, s, t).unwrap();
+        let d = surface.partials(s, t);
+        let parts = [(&f.point, d.point), (&f.ds, d.ds), (&f.dt, d.dt), (&f.dst, d.dst)];
+        for (formulas, values) in parts {
+            let v = formulas[0].eval(&[s, t]);
+            if values[0].is_finite() {
+                let scale = values[0].abs().max(1.0);
+                prop_assert!((v - values[0]).abs() <= 1e-9 * scale, "{}: {} vs {}", formulas[0].plain(), v, values[0]);
+            }
+        }
+    }
 }

@@ -166,14 +166,14 @@ fn torus_partials_table_shows_dual_equal_to_closed_form() {
     assert_eq!(
         first,
         [
-            "(2 + cos(t))*cos(s)",
-            "(2 + cos(t))*sin(s)",
+            "cos(s)*(2 + cos(t))",
+            "sin(s)*(2 + cos(t))",
             "sin(t)",
             "-sin(s)*(2 + cos(t))",
             "cos(s)*(2 + cos(t))",
             "0",
-            "-sin(t)*cos(s)",
-            "-sin(t)*sin(s)",
+            "-cos(s)*sin(t)",
+            "-sin(s)*sin(t)",
             "cos(t)",
             "sin(s)*sin(t)",
             "-cos(s)*sin(t)",

@@ -137,11 +137,31 @@ impl BSplineBasis {
         (span..=n).find(|&s| k[s] < k[s + 1]).unwrap_or(span)
     }
 
+    /// The values on which span `span`, picked for the value `x`, holds: its interval, the
+    /// end spans extended beyond the domain where `x` lies beyond it (they extrapolate).
+    fn span_condition(&self, span: usize, x: f64) -> crate::symbolic::Condition {
+        let (a, b) = self.domain();
+        let mut c = crate::symbolic::Condition::from(self.span_interval(span));
+        if x < a {
+            c.lo = f64::NEG_INFINITY;
+            c.lo_closed = false;
+        }
+        if x > b {
+            c.hi = f64::INFINITY;
+            c.hi_closed = false;
+        }
+        c
+    }
+
     /// The knot span `[t_ℓ, t_ℓ₊₁)` of `t` ([`BSplineBasis::find_span`]: the right end of the
     /// domain belongs to the last non-empty span, which is then closed), on which every basis
     /// function is one polynomial.
     pub fn span_of(&self, t: f64) -> crate::domain::Span {
-        let span = self.find_span(t);
+        self.span_interval(self.find_span(t))
+    }
+
+    /// Knot span `span` as an interval, closed if it ends at the domain's right end.
+    fn span_interval(&self, span: usize) -> crate::domain::Span {
         let k = self.knots.knots();
         crate::domain::Span {
             lo: k[span],
@@ -252,7 +272,9 @@ impl BSplineBasis {
             }
             return;
         }
-        let t0 = t.re();
+        // the expansion point (the piece was picked by the span): any point of the span gives
+        // the same polynomial
+        let t0 = crate::symbolic::claim::read_quietly(&t);
         // the Taylor expansion stops at NDERIV: exact for dual numbers of plain numbers,
         // whose part beyond the real one is nilpotent. Under a symbolic trace the real part
         // itself is a formula in t, so the span polynomial is expanded to its full degree p
@@ -285,7 +307,10 @@ impl BSplineBasis {
     /// The span holding `t` and the non-zero basis functions there (see
     /// [`BSplineBasis::nonzero_into`]).
     pub fn nonzero<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> (usize, Vec<D>) {
-        let span = self.find_span(t.re());
+        let span = crate::symbolic::claim::choose(&t, |x| {
+            let span = self.find_span(x);
+            (span, self.span_condition(span, x))
+        });
         let mut out = vec![D::zero(); self.degree + 1];
         self.nonzero_into(span, t, &mut out);
         (span, out)
@@ -381,9 +406,11 @@ impl BSplineBasis {
             "N_{{{i},{q}}} needs knot i + q + 1, beyond the last knot index {}",
             k.len() - 1
         );
-        let x = t.re();
         let b = self.domain().1;
         let end_span = self.find_span(b);
+        // the level-0 functions are picked by the knot span of t: the formula holds there
+        let x =
+            crate::symbolic::claim::choose(&t, |x| (x, self.span_condition(self.find_span(x), x)));
         // level 0: N_{i+j,0}, j = 0 … q. At the right end b exactly, the last non-empty span
         // is closed on the right and no other N_{·,0} is 1 (for a clamped end the half-open
         // rule would give all zeros; where b is repeated, an empty span).

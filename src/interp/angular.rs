@@ -641,10 +641,19 @@ impl AngularSpline {
     }
 
     fn eval_in<D: DualNum<Primitive = f64> + Copy>(&self, j: usize, s: D) -> Vector2<D> {
+        use crate::symbolic::claim::Condition;
         // the arcs of piece j: breaks[k] = j and the next one or two
         let k = self.breaks.partition_point(|&b| b < j as f64);
         if self.kinds[j] == PieceKind::Inflection {
-            if s.re() < 0.5 {
+            // the two arcs of an inflection piece: s ∈ [0, ½) and [½, 1]
+            let first = crate::symbolic::claim::choose(&s, |x| {
+                if x < 0.5 {
+                    (true, Condition::below(0.5, false))
+                } else {
+                    (false, Condition::above(0.5, true))
+                }
+            });
+            if first {
                 self.arcs[k].eval(s * 2.0)
             } else {
                 self.arcs[k + 1].eval(s * 2.0 - 1.0)
@@ -783,13 +792,30 @@ impl ParametricCurve<2> for AngularSpline {
     /// belongs to the last piece. Outside the domain the curve stays at its end points (an
     /// Angular piece does not extrapolate: its formula is only valid for `s ∈ [0, 1]`).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> Vector2<D> {
+        use crate::symbolic::claim::{choose, unit_index, Condition};
         let (a, b) = self.domain();
-        let x = u.re();
-        if x.is_nan() || x <= a {
-            return self.eval_in(0, if x < a { D::zero() } else { u });
-        }
-        let j = (x.floor() as usize).min(self.pieces() - 1);
-        let s = if x > b { D::one() } else { u - j as f64 };
+        let n = self.pieces();
+        // beyond the ends the curve is a constant point; inside, piece j = ⌊u⌋ (the right
+        // end in the last): the choice and the values it holds for, recorded together
+        let (j, s) = choose(&u, |x| {
+            if x < a {
+                ((0, Some(0.0)), Condition::below(a, false))
+            } else if x > b {
+                ((n - 1, Some(1.0)), Condition::above(b, false))
+            } else {
+                let j = unit_index(x, n);
+                let span = crate::domain::Span {
+                    lo: j as f64,
+                    hi: j as f64 + 1.0,
+                    closed: j + 1 >= n,
+                };
+                ((j, None), Condition::from(span))
+            }
+        });
+        let s = match s {
+            Some(end) => D::from(end),
+            None => u - j as f64,
+        };
         self.eval_in(j, s)
     }
 
@@ -822,11 +848,7 @@ impl ParametricCurve<2> for AngularSpline {
 /// Piece `j = ⌊u⌋` of `pieces` unit pieces, `[j, j + 1)`, clamped to the first and last (the
 /// last closed).
 pub(crate) fn unit_span(u: f64, pieces: usize) -> crate::domain::Span {
-    let j = if u.is_nan() || u <= 0.0 {
-        0
-    } else {
-        (u.floor() as usize).min(pieces.saturating_sub(1))
-    };
+    let j = crate::symbolic::claim::unit_index(u, pieces);
     crate::domain::Span {
         lo: j as f64,
         hi: j as f64 + 1.0,

@@ -238,7 +238,8 @@ impl Lagrange {
 
     /// The scaled barycentric terms `λᵢ` at `t` (see [`Lagrange`]): `ℓᵢ(t) = λᵢ / Σⱼ λⱼ`.
     fn lambdas<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
-        let k = self.nearest(t.re());
+        // the nearest node only steadies the rounding: every choice gives the same polynomial
+        let k = self.nearest(crate::symbolic::claim::read_quietly(&t));
         let near = t - self.x[k];
         (0..self.x.len())
             .map(|i| {
@@ -264,13 +265,18 @@ impl Lagrange {
     /// 2004).
     pub fn eval<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
         let l = self.lambdas(t);
-        let (num, den, size) = l
-            .iter()
-            .zip(&self.y)
-            .fold((D::zero(), D::zero(), 0.0), |(num, den, size), (&v, &y)| {
-                (num + v * y, den + v, size + v.re().abs())
-            });
-        let d = den.re();
+        let (num, den, size) = l.iter().zip(&self.y).fold(
+            (D::zero(), D::zero(), 0.0),
+            |(num, den, size), (&v, &y)| {
+                (
+                    num + v * y,
+                    den + v,
+                    size + crate::symbolic::claim::read_quietly(&v).abs(),
+                )
+            },
+        );
+        // the two barycentric forms are one polynomial: the choice is for rounding only
+        let d = crate::symbolic::claim::read_quietly(&den);
         if d.is_finite() && d.abs() > 1e-8 * size {
             num / den * self.scale
         } else {
@@ -285,7 +291,7 @@ impl Lagrange {
     /// `W ℓ_{≠k}(t)` formed from logarithms so that it neither overflows nor underflows
     /// before it is applied (saturated at `f64::MAX`, where the interpolant itself overflows).
     fn first_form<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
-        let x0 = t.re();
+        let x0 = crate::symbolic::claim::read_quietly(&t);
         let k = self.nearest(x0);
         let near = t - self.x[k];
         let mut bracket = D::from(self.w[k] * self.y[k]);

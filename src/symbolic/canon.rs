@@ -9,8 +9,15 @@
 //! - constants fold, and a constant multiplies into a sum (`2·(1 + t) = 2 + 2t`);
 //! - a sum that is a factor of a product is kept whole, its sign out if all its terms are
 //!   negative (`(−a − b)·c = −(a + b)·c`); `(x·y)ⁿ = xⁿ·yⁿ` and `(xᵃ)ⁿ = xᵃⁿ` for integer `n`,
-//!   `(c·x)ᵖ = cᵖ·xᵖ` for `c > 0` and any `p`; a power `p` of anything else stays whole
-//!   (`√(x²)` is not `x`).
+//!   `(c·x·y)ᵖ = cᵖ·xᵖ·yᵖ` for `c > 0`, any `p` and bases that are `≥ 0` by their structure
+//!   ([`Atom::nonnegative`]: `exp`, `cosh`, `|·|`, …); a power `p` of anything else stays
+//!   whole (`√(s·t)` is not `√s·√t`, `√(x²)` is not `x`).
+//! - Equality is structural and ignores order: terms and factors compare as multisets
+//!   (`sin(x + y) − sin(y + x) = 0`).
+//!
+//! Every rule gives a right side defined (and equal) wherever the left side is; the capture
+//! check ([`crate::symbolic`]) evaluates each formula at its trace point against the traced
+//! value.
 //!
 //! Order: terms and factors keep the order in which the traced code first produced them (the
 //! formula reads like the code that computed it), with a product's coefficient first.
@@ -51,8 +58,8 @@ pub enum Atom {
     Opaque(&'static str, Sum, f64),
 }
 
-/// `coef · Π baseᵉ`, the factors in their display order.
-#[derive(Debug, Clone, PartialEq)]
+/// `coef · Π baseᵉ`, the factors in the order they were produced (printing orders them).
+#[derive(Debug, Clone)]
 pub struct Term {
     /// The coefficient.
     pub coef: f64,
@@ -71,9 +78,36 @@ pub struct Sum {
     hash: u64,
 }
 
+/// Terms are equal when their coefficients are and their factors are the same multiset
+/// (`x·y = y·x`).
+impl PartialEq for Term {
+    fn eq(&self, other: &Term) -> bool {
+        self.coef.to_bits() == other.coef.to_bits() && self.like(other)
+    }
+}
+
+/// Sums are equal when their terms are the same multiset (`x + y = y + x`): a sum's terms are
+/// pairwise unlike (collected), so each term of one must equal one term of the other.
 impl PartialEq for Sum {
     fn eq(&self, other: &Sum) -> bool {
-        self.hash == other.hash && self.terms == other.terms
+        if self.hash != other.hash || self.terms.len() != other.terms.len() {
+            return false;
+        }
+        if self.terms.len() <= 8 {
+            return self
+                .terms
+                .iter()
+                .all(|t| other.terms.iter().any(|u| t == u));
+        }
+        let mut index: FastMap<u64, Vec<&Term>> = FastMap::default();
+        for u in &other.terms {
+            index.entry(u.monomial_hash()).or_default().push(u);
+        }
+        self.terms.iter().all(|t| {
+            index
+                .get(&t.monomial_hash())
+                .is_some_and(|us| us.contains(&t))
+        })
     }
 }
 
@@ -129,10 +163,67 @@ impl Atom {
         }
     }
 
+    /// The atom's value at `values` and a first-order bound of its rounding error in units
+    /// of `ε` (module docs of [`crate::symbolic`]: the capture check).
+    pub(crate) fn eval_bound(&self, values: &[f64]) -> (f64, f64) {
+        match self {
+            Atom::Var(i) => (values.get(*i as usize).copied().unwrap_or(f64::NAN), 0.0),
+            Atom::Func(f, a) => {
+                let (x, e) = a.eval_bound(values);
+                let y = f.apply(x);
+                (y, f.slope(x) * e + 2.0 * y.abs())
+            }
+            Atom::Group(a) => a.eval_bound(values),
+            Atom::Pow(a, b) => {
+                let ((x, ex), (y, ey)) = (a.eval_bound(values), b.eval_bound(values));
+                let v = x.powf(y);
+                (v, pow_bound(x, ex, y, ey, v))
+            }
+            Atom::Atan2(a, b) => {
+                let ((y, ey), (x, ex)) = (a.eval_bound(values), b.eval_bound(values));
+                let v = y.atan2(x);
+                (v, atan2_bound(y, ey, x, ex, v))
+            }
+            Atom::Opaque(_, _, v) => (*v, 0.0),
+        }
+    }
+
+    /// Whether the atom is `≥ 0` wherever it is defined, by its structure (not by its value
+    /// at a point): `exp`, `cosh`, `|x|`, `acos`, and groups and powers of such.
+    pub fn nonnegative(&self) -> bool {
+        match self {
+            Atom::Func(f, _) => matches!(f, Func::Exp | Func::Cosh | Func::Abs | Func::Acos),
+            Atom::Group(s) => s.nonnegative(),
+            Atom::Pow(a, _) => a.nonnegative(),
+            Atom::Var(_) | Atom::Atan2(..) | Atom::Opaque(..) => false,
+        }
+    }
+
     /// Whether this is a variable.
     pub fn is_var(&self) -> bool {
         matches!(self, Atom::Var(_))
     }
+}
+
+/// The rounding bound of `v = xʸ` (in units of `ε`) from the bounds `ex`, `ey` of `x`, `y`.
+pub(crate) fn pow_bound(x: f64, ex: f64, y: f64, ey: f64, v: f64) -> f64 {
+    let dx = if ex == 0.0 {
+        0.0
+    } else {
+        (y * x.powf(y - 1.0)).abs() * ex
+    };
+    let dy = if ey == 0.0 {
+        0.0
+    } else {
+        (v * x.ln()).abs() * ey
+    };
+    dx + dy + 2.0 * v.abs()
+}
+
+/// The rounding bound of `v = atan2(y, x)` (in units of `ε`).
+pub(crate) fn atan2_bound(y: f64, ey: f64, x: f64, ex: f64, v: f64) -> f64 {
+    let r2 = x * x + y * y;
+    (x.abs() * ey + y.abs() * ex) / r2 + 2.0 * v.abs()
 }
 
 /// `x^e` as evaluated (square roots exactly as `sqrt`).
@@ -192,6 +283,40 @@ impl Term {
         self.factors
             .iter()
             .fold(self.coef, |p, (a, e)| p * power(a.eval(values), *e))
+    }
+
+    /// The term's value and rounding bound (units of `ε`): the factors' errors carried by
+    /// their partial derivatives, plus one rounding per multiplication and the coefficient's.
+    fn eval_bound(&self, values: &[f64]) -> (f64, f64) {
+        let parts: Vec<(f64, f64)> = self
+            .factors
+            .iter()
+            .map(|(a, e)| {
+                let (x, ex) = a.eval_bound(values);
+                let v = power(x, *e);
+                let d = if ex == 0.0 {
+                    0.0
+                } else {
+                    (e * power(x, e - 1.0)).abs() * ex
+                };
+                (v, d + 2.0 * v.abs())
+            })
+            .collect();
+        let value = parts.iter().fold(self.coef, |p, (v, _)| p * v);
+        // Σⱼ dⱼ Πₖ≠ⱼ |vₖ|, with prefix and suffix products (zeros handled)
+        let n = parts.len();
+        let mut suffix = vec![1.0; n + 1];
+        for j in (0..n).rev() {
+            suffix[j] = suffix[j + 1] * parts[j].0.abs();
+        }
+        let mut prefix = 1.0;
+        let mut carried = 0.0;
+        for (j, (v, d)) in parts.iter().enumerate() {
+            carried += d * prefix * suffix[j + 1];
+            prefix *= v.abs();
+        }
+        let bound = self.coef.abs() * carried + (n as f64 + 2.0) * value.abs();
+        (value, bound)
     }
 
     /// `self · other`, equal bases merged.
@@ -266,6 +391,18 @@ impl Sum {
         Sum::from_terms(vec![t])
     }
 
+    /// Whether the sum is `≥ 0` wherever it is defined, by its structure: every coefficient
+    /// `≥ 0` and every factor an even power, a real power (defined only where its base is
+    /// `≥ 0`, and then `≥ 0`) or a [nonnegative](Atom::nonnegative) atom (`1 + t²`, `eˢ·√x`).
+    pub fn nonnegative(&self) -> bool {
+        self.terms.iter().all(|t| {
+            t.coef >= 0.0
+                && t.factors.iter().all(|(a, e)| {
+                    (e.fract() == 0.0 && e % 2.0 == 0.0) || e.fract() != 0.0 || a.nonnegative()
+                })
+        })
+    }
+
     /// Whether the sum is a rational function of its variables: only variables and groups
     /// of such sums as factors, integer exponents.
     pub fn is_rational(&self) -> bool {
@@ -304,6 +441,20 @@ impl Sum {
     /// NaN).
     pub fn eval(&self, values: &[f64]) -> f64 {
         self.terms.iter().map(|t| t.eval(values)).sum()
+    }
+
+    /// The value at `values` and a first-order bound of its rounding error in units of `ε`:
+    /// the terms' bounds plus one rounding of the running sum per term.
+    pub(crate) fn eval_bound(&self, values: &[f64]) -> (f64, f64) {
+        let mut value = 0.0;
+        let (mut bound, mut size) = (0.0, 0.0);
+        for t in &self.terms {
+            let (v, e) = t.eval_bound(values);
+            value += v;
+            bound += e;
+            size += v.abs();
+        }
+        (value, bound + self.terms.len() as f64 * size)
     }
 
     fn scale(&self, c: f64) -> Sum {
@@ -414,8 +565,10 @@ impl Sum {
             return Sum::num(c.powf(p));
         }
         if let [t] = a.terms.as_slice() {
-            // (c·x·y)ᵖ = cᵖ·xᵖ·yᵖ for c > 0 and first powers only
-            if t.coef > 0.0 && t.factors.iter().all(|(_, e)| *e == 1.0) {
+            // (c·x·y)ᵖ = cᵖ·xᵖ·yᵖ for c > 0 and first powers of bases that are ≥ 0 wherever
+            // defined: for a base that can be negative the right side is undefined where the
+            // left is not (√(s·t) at s = t = −1 is 1, √s·√t is not real)
+            if t.coef > 0.0 && t.factors.iter().all(|(a, e)| *e == 1.0 && a.nonnegative()) {
                 return Sum::from_term(Term {
                     coef: t.coef.powf(p),
                     factors: t.factors.iter().map(|(b, _)| (b.clone(), p)).collect(),

@@ -4,6 +4,8 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
+use std::marker::PhantomData;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// A multiply-rotate hasher for the small integer keys of the symbolic module (arena nodes,
 /// node ids, structural hashes): the keys are not attacker-chosen, and SipHash's cost
@@ -117,7 +119,18 @@ impl Func {
 
     /// The function at `x`.
     pub fn apply(&self, x: f64) -> f64 {
-        use num_dual::DualNum;
+        self.apply_to(x)
+    }
+
+    /// `|f′(x)|`, exact (one dual-number evaluation): how much an error in the argument
+    /// moves the value, for the rounding bound of the capture check.
+    pub(crate) fn slope(&self, x: f64) -> f64 {
+        use num_dual::Dual64;
+        self.apply_to(Dual64::from(x).derivative()).eps.abs()
+    }
+
+    /// The function at any number type (one definition for values and slopes).
+    fn apply_to<D: num_dual::DualNum<Primitive = f64>>(&self, x: D) -> D {
         match self {
             Func::Sin => x.sin(),
             Func::Cos => x.cos(),
@@ -136,9 +149,9 @@ impl Func {
             Func::Acosh => x.acosh(),
             Func::Atanh => x.atanh(),
             Func::Abs => x.abs(),
-            Func::SphJ0 => DualNum::sph_j0(&x),
-            Func::SphJ1 => DualNum::sph_j1(&x),
-            Func::SphJ2 => DualNum::sph_j2(&x),
+            Func::SphJ0 => x.sph_j0(),
+            Func::SphJ1 => x.sph_j1(),
+            Func::SphJ2 => x.sph_j2(),
         }
     }
 }
@@ -197,19 +210,37 @@ impl Node {
     }
 }
 
+/// The identity of the next trace, unique across threads and the whole process (as CppAD's
+/// tape ids): a handle names its trace by it, so a handle of an ended trace or of another
+/// thread's never matches the running one. `0` is no trace.
+static NEXT_TRACE: AtomicU64 = AtomicU64::new(1);
+
+/// A marker that makes a type neither `Send` nor `Sync`: expressions index a per-thread arena.
+pub(crate) type ThreadBound = PhantomData<*const ()>;
+
 /// The per-thread arena of one trace.
 #[derive(Debug, Default)]
 pub(crate) struct Arena {
     pub(crate) nodes: Vec<Node>,
     index: FastMap<(u8, u64, u64, &'static str), u32>,
-    /// Incremented when a trace ends: handles of an older trace are stale.
-    pub(crate) generation: u32,
+    /// The running trace's identity (from [`NEXT_TRACE`]): handles of any other are stale.
+    pub(crate) generation: u64,
+    /// Set when an operation was given a handle of another trace (stale or foreign): every
+    /// formula of the trace is then refused.
+    pub(crate) poisoned: bool,
     /// Set when [`MAX_NODES`] was reached; later nodes all collapse onto one opaque node.
     pub(crate) overflowed: bool,
     /// Conditions the trace's values took on `re()` branches (`abs`, comparisons…).
     pub(crate) branches: Vec<(u32, &'static str, f64)>,
     /// Whether a trace is running (from its start to its end).
     pub(crate) live: bool,
+    /// The conditions the traced code recorded where it picked a piece by a value
+    /// ([`super::claim::choose`]): node and interval of its values.
+    pub(crate) claims: Vec<(u32, super::claim::Condition)>,
+    /// Values read through `re()` without a condition (node and value).
+    pub(crate) reads: Vec<(u32, f64)>,
+    /// How a read through `re()` is recorded now.
+    pub(crate) read_mode: super::claim::ReadMode,
 }
 
 thread_local! {
@@ -245,16 +276,24 @@ impl Arena {
         self.nodes.shrink_to_fit();
         self.index = FastMap::default();
         self.branches = Vec::new();
+        self.claims = Vec::new();
+        self.reads = Vec::new();
     }
 
-    /// Starts a trace: empties the arena (node 0 is the overflow marker).
+    /// Starts a trace: empties the arena (node 0 is the overflow marker) and takes a new
+    /// identity.
     pub(crate) fn reset(&mut self) {
         self.nodes.clear();
         self.index.clear();
         self.branches.clear();
+        self.claims.clear();
+        self.reads.clear();
+        self.read_mode = super::claim::ReadMode::default();
         self.overflowed = false;
+        self.poisoned = false;
         self.live = true;
-        self.generation = self.generation.wrapping_add(1);
+        // 2⁶⁴ traces cannot be started: the identity never wraps
+        self.generation = NEXT_TRACE.fetch_add(1, Ordering::Relaxed);
         self.nodes.push(Node::TooLarge);
     }
 }
@@ -268,12 +307,22 @@ fn same(a: u32, b: u32) -> bool {
 /// An expression: a handle into the current trace's arena and its value at the trace point.
 /// `Copy`, so it is the inner type of num-dual's `Dual`, `Dual2` and `HyperDual` under the
 /// library's bound (`D: DualNum<Primitive = f64> + Copy`).
+///
+/// A handle names its trace by an identity unique in the process, and it cannot leave its
+/// thread (it indexes that thread's arena):
+///
+/// ```compile_fail
+/// fn send<T: Send>(_: T) {}
+/// let mut trace = splinelab::symbolic::Trace::new();
+/// send(trace.var("x", 1.0)); // `Expr` is not `Send`
+/// ```
 #[derive(Debug, Clone, Copy)]
 pub struct Expr {
     pub(crate) id: u32,
-    pub(crate) generation: u32,
+    pub(crate) generation: u64,
     /// The value at the trace point.
     pub(crate) value: f64,
+    pub(crate) local: ThreadBound,
 }
 
 impl Expr {
@@ -287,25 +336,35 @@ impl Expr {
         ARENA.with(|a| a.borrow().generation == self.generation)
     }
 
-    pub(crate) fn make(node: Node, value: f64) -> Expr {
+    /// The handle of `node` (interned in the running trace) with the value `value`, built
+    /// from `operands`: an operand of another trace (ended, or another thread's) poisons the
+    /// trace, and the result is the overflow marker, which no formula reads.
+    pub(crate) fn make(node: Node, value: f64, operands: &[Expr]) -> Expr {
         ARENA.with(|a| {
             let mut a = a.borrow_mut();
             if a.nodes.is_empty() {
                 // used outside a trace: start one implicitly
                 a.reset();
             }
-            let id = a.intern(node);
+            let generation = a.generation;
+            let id = if operands.iter().any(|e| e.generation != generation) {
+                a.poisoned = true;
+                0
+            } else {
+                a.intern(node)
+            };
             Expr {
                 id,
-                generation: a.generation,
+                generation,
                 value,
+                local: PhantomData,
             }
         })
     }
 
     /// The constant `x`.
     pub fn constant(x: f64) -> Expr {
-        Expr::make(Node::Num(x), x)
+        Expr::make(Node::Num(x), x, &[])
     }
 
     pub(crate) fn node(&self) -> Option<Node> {
@@ -363,7 +422,7 @@ impl Expr {
                 if same(a.id, b.id) {
                     return Expr::mul(Expr::constant(2.0), a);
                 }
-                Expr::make(Node::Add(a.id, b.id), value)
+                Expr::make(Node::Add(a.id, b.id), value, &[a, b])
             }
         }
     }
@@ -372,15 +431,16 @@ impl Expr {
         match (a.as_constant(), a.node()) {
             (Some(x), _) => Expr::constant(-x),
             (_, Some(Node::Neg(inner))) => Expr::from_id(inner, -a.value, a.generation),
-            _ => Expr::make(Node::Neg(a.id), -a.value),
+            _ => Expr::make(Node::Neg(a.id), -a.value, &[a]),
         }
     }
 
-    fn from_id(id: u32, value: f64, generation: u32) -> Expr {
+    pub(crate) fn from_id(id: u32, value: f64, generation: u64) -> Expr {
         Expr {
             id,
             generation,
             value,
+            local: PhantomData,
         }
     }
 
@@ -407,7 +467,7 @@ impl Expr {
                     Expr::neg(Expr::mul(a, Expr::from_id(y, -b.value, b.generation)))
                 }
                 _ if same(a.id, b.id) => Expr::powi(a, 2),
-                _ => Expr::make(Node::Mul(a.id, b.id), value),
+                _ => Expr::make(Node::Mul(a.id, b.id), value, &[a, b]),
             },
         }
     }
@@ -420,7 +480,7 @@ impl Expr {
             (_, Some(1.0)) => a,
             (_, Some(-1.0)) => Expr::neg(a),
             _ if same(a.id, b.id) => Expr::constant(1.0),
-            _ => Expr::make(Node::Div(a.id, b.id), value),
+            _ => Expr::make(Node::Div(a.id, b.id), value, &[a, b]),
         }
     }
 
@@ -430,7 +490,7 @@ impl Expr {
             (Some(x), _) => Expr::constant(x.powi(n)),
             (_, 0) => Expr::constant(1.0),
             (_, 1) => a,
-            _ => Expr::make(Node::Powi(a.id, n), value),
+            _ => Expr::make(Node::Powi(a.id, n), value, &[a]),
         }
     }
 
@@ -443,7 +503,7 @@ impl Expr {
         }
         match a.as_constant() {
             Some(c) => Expr::constant(c.powf(x)),
-            None => Expr::make(Node::Powf(a.id, x), a.value.powf(x)),
+            None => Expr::make(Node::Powf(a.id, x), a.value.powf(x), &[a]),
         }
     }
 
@@ -451,7 +511,7 @@ impl Expr {
         match (a.as_constant(), b.as_constant()) {
             (Some(x), Some(y)) => Expr::constant(x.powf(y)),
             (_, Some(y)) => Expr::powf(a, y),
-            _ => Expr::make(Node::Pow(a.id, b.id), a.value.powf(b.value)),
+            _ => Expr::make(Node::Pow(a.id, b.id), a.value.powf(b.value), &[a, b]),
         }
     }
 
@@ -461,18 +521,18 @@ impl Expr {
         }
         match a.as_constant() {
             Some(x) => Expr::constant(f.apply(x)),
-            None => Expr::make(Node::Apply(f, a.id), f.apply(a.value)),
+            None => Expr::make(Node::Apply(f, a.id), f.apply(a.value), &[a]),
         }
     }
 
     pub(crate) fn atan2(a: Expr, b: Expr) -> Expr {
         match (a.as_constant(), b.as_constant()) {
             (Some(x), Some(y)) => Expr::constant(x.atan2(y)),
-            _ => Expr::make(Node::Atan2(a.id, b.id), a.value.atan2(b.value)),
+            _ => Expr::make(Node::Atan2(a.id, b.id), a.value.atan2(b.value), &[a, b]),
         }
     }
 
     pub(crate) fn opaque(what: &'static str, a: Expr, value: f64) -> Expr {
-        Expr::make(Node::Opaque(what, a.id, value), value)
+        Expr::make(Node::Opaque(what, a.id, value), value, &[a])
     }
 }

@@ -19,9 +19,16 @@ use num_dual::{Dual2, HyperDual};
 pub struct Traced {
     /// One formula per value the code returned.
     pub formulas: Vec<Formula>,
-    /// The branches the numeric path took (`s - 1/4 > 0`, …): the formulas hold where these
-    /// hold.
+    /// Where the formulas hold, as the code recorded it: the pieces it picked
+    /// (`t ∈ [1/4, 1/2)`), the branches it took (`s - 1/4 > 0`), and — if it read a value
+    /// without recording a condition — `only at t = 0.3 …`: nothing is claimed beyond what
+    /// was recorded.
     pub branches: Vec<String>,
+    /// The pieces, structured: the expression read and the interval of its values.
+    pub pieces: Vec<(String, super::Condition)>,
+    /// Whether the formulas are claimed at the trace point only (a value was read without a
+    /// recorded condition).
+    pub pointwise: bool,
 }
 
 /// Traces `f` at the variables `vars` (`(name, value)`): `f` runs once on [`Expr`] values,
@@ -30,7 +37,7 @@ pub struct Traced {
 /// ```
 /// use num_dual::DualNum;
 /// let out = splinelab::symbolic::trace([("x", 0.5)], |[x]| vec![x.sin() * x * 2.0])?;
-/// assert_eq!(out.formulas[0].plain(), "2*sin(x)*x");
+/// assert_eq!(out.formulas[0].plain(), "2*x*sin(x)");
 /// # Ok::<(), splinelab::Error>(())
 /// ```
 ///
@@ -45,9 +52,26 @@ pub fn trace<const K: usize>(
     let x = vars.map(|(name, value)| trace.var(name, value));
     let values = f(x);
     let formulas = trace.formulas(&values)?;
+    let pieces = trace.pieces();
+    let reads = trace.unrecorded_reads();
+    let mut branches: Vec<String> = pieces.iter().map(|(what, c)| c.describe(what)).collect();
+    branches.extend(trace.branches());
+    if !reads.is_empty() {
+        let at = vars
+            .iter()
+            .map(|(name, value)| format!("{name} = {}", super::number(*value)))
+            .collect::<Vec<_>>()
+            .join(", ");
+        branches.push(format!(
+            "only at {at}: the code read {} without recording a condition",
+            reads.join(", ")
+        ));
+    }
     Ok(Traced {
         formulas,
-        branches: trace.branches(),
+        branches,
+        pieces,
+        pointwise: !reads.is_empty(),
     })
 }
 
@@ -106,7 +130,7 @@ impl SurfaceFormulas {
 /// use splinelab::symbolic::surface_formulas;
 /// use splinelab::Torus;
 /// let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7)?;
-/// assert_eq!(f.point[0].plain(), "(2 + cos(t))*cos(s)"); // f_x of Codice 3
+/// assert_eq!(f.point[0].plain(), "cos(s)*(2 + cos(t))"); // f_x of Codice 3
 /// assert_eq!(f.dst[0].plain(), "sin(s)*sin(t)");
 /// # Ok::<(), splinelab::Error>(())
 /// ```
@@ -134,11 +158,7 @@ pub fn surface_formulas<S: ParametricSurface + ?Sized>(
         }
         out
     })?;
-    let mut branches: Vec<String> = surface
-        .span_at(s, t)
-        .map(|[u, v]| vec![format!("s ∈ {u}"), format!("t ∈ {v}")])
-        .unwrap_or_default();
-    branches.extend(traced.branches);
+    let branches = traced.branches;
     let f: Vec<Formula> = traced.formulas.iter().map(Formula::tidy).collect();
     let three = |k: usize| [f[k].clone(), f[k + 1].clone(), f[k + 2].clone()];
     Ok(SurfaceFormulas {
@@ -159,10 +179,11 @@ pub struct CurveFormulas {
     pub d1: Vec<Formula>,
     /// `C″(t)`.
     pub d2: Vec<Formula>,
-    /// The piece of a piecewise curve ([`ParametricCurve::span_at`]); `None` for a curve
-    /// that is one formula.
+    /// The piece of `t` the evaluation picked and recorded; `None` for a curve whose code
+    /// picked none (one formula, or the formulas hold at `t` only: see `branches`).
     pub span: Option<Span>,
-    /// The branches the evaluation took besides the piece.
+    /// Where the formulas hold, as recorded ([`Traced::branches`]): the pieces, the
+    /// branches, and `only at t = …` when the code read `t` without recording a condition.
     pub branches: Vec<String>,
 }
 
@@ -186,12 +207,10 @@ impl CurveFormulas {
             row
         })
         .collect();
-        let mut conditions: Vec<String> = self.span.iter().map(|s| format!("t ∈ {s}")).collect();
-        conditions.extend(self.branches.iter().cloned());
         MathTable {
             header,
             rows,
-            notes: holds_where(&conditions),
+            notes: holds_where(&self.branches),
         }
     }
 
@@ -229,11 +248,16 @@ pub fn curve_formulas<const N: usize, C: ParametricCurve<N> + ?Sized>(
         .iter()
         .map(Formula::tidy)
         .collect::<Vec<_>>();
+    let span = traced
+        .pieces
+        .iter()
+        .find(|(what, _)| what == "t")
+        .and_then(|(_, c)| c.as_span());
     Ok(CurveFormulas {
         point: f[..N].to_vec(),
         d1: f[N..2 * N].to_vec(),
         d2: f[2 * N..].to_vec(),
-        span: curve.span_at(t),
+        span,
         branches: traced.branches,
     })
 }
@@ -426,11 +450,18 @@ pub fn patch_formulas(patch: &HermitePatch) -> Result<PatchFormulas> {
 
 /// The note under a table of formulas that hold only under `conditions` (none if empty).
 fn holds_where(conditions: &[String]) -> Vec<String> {
-    if conditions.is_empty() {
-        return Vec::new();
+    let (only, rest): (Vec<&String>, Vec<&String>) =
+        conditions.iter().partition(|c| c.starts_with("only at "));
+    let mut out = Vec::new();
+    if !rest.is_empty() {
+        out.push(format!(
+            "These formulas hold where {}.",
+            rest.iter()
+                .map(|c| c.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
     }
-    vec![format!(
-        "These formulas hold where {}.",
-        conditions.join(", ")
-    )]
+    out.extend(only.iter().map(|c| format!("They are claimed {c}.")));
+    out
 }

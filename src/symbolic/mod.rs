@@ -7,7 +7,7 @@
 //! use splinelab::symbolic::surface_formulas;
 //! use splinelab::Torus;
 //! let f = surface_formulas(&Torus::new(2.0, 1.0), 0.3, 0.7)?;
-//! assert_eq!(f.point[0].plain(), "(2 + cos(t))*cos(s)");   // f_x of Codice 3
+//! assert_eq!(f.point[0].plain(), "cos(s)*(2 + cos(t))");   // f_x of Codice 3
 //! assert_eq!(f.ds[0].plain(), "-sin(s)*(2 + cos(t))");     // diff(f_x, s)
 //! assert_eq!(f.dst[0].plain(), "sin(s)*sin(t)");           // diff(f_x, s, t)
 //! assert!((f.dst[0].eval(&[0.3, 0.7]) - 0.3f64.sin() * 0.7f64.sin()).abs() < 1e-15);
@@ -41,7 +41,7 @@
 //! patch) are multiplied out in powers of the variables ([`Formula::tidy`],
 //! [`Formula::expanded`]), over one denominator where all denominators are powers of one
 //! polynomial (a NURBS piece's derivatives: `(N′·D − N·D′)/D^2`); other formulas keep their
-//! products (`(2 + cos(t))*cos(s)`). *Not done:* trigonometric and other function
+//! products (`cos(s)*(2 + cos(t))`). *Not done:* trigonometric and other function
 //! identities (`sin² + cos² = 1`), common denominators of different polynomials, cancelling
 //! common factors of a numerator and denominator, factoring polynomials, and
 //! cleaning the rounding residue of the traced `f64` arithmetic (a coefficient that is `0` in
@@ -68,6 +68,7 @@
 //! parsing (`Num::from_str_radix`) is an error.
 
 mod canon;
+pub(crate) mod claim;
 mod display;
 mod expr;
 mod formulas;
@@ -75,6 +76,7 @@ mod ops;
 mod print;
 
 pub use canon::{MAX_EXPANDED_TERMS, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+pub use claim::Condition;
 pub use display::{Math, MathTable};
 pub use expr::{Expr, Func, Node, MAX_NODES};
 pub use formulas::{
@@ -89,7 +91,8 @@ use expr::ARENA;
 use std::cell::RefCell;
 
 thread_local! {
-    static NAMES: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
+    /// The running trace's variables: names and values at the trace point.
+    static VARS: RefCell<(Vec<String>, Vec<f64>)> = const { RefCell::new((Vec::new(), Vec::new())) };
 }
 
 /// Whether a symbolic trace is live on this thread: generic code that uses the numeric value
@@ -100,36 +103,51 @@ pub(crate) fn tracing() -> bool {
 }
 
 pub(crate) fn current_names() -> Vec<String> {
-    NAMES.with(|n| n.borrow().clone())
+    VARS.with(|v| v.borrow().0.clone())
+}
+
+/// The running trace's variables' values at the trace point.
+pub(crate) fn current_point() -> Vec<f64> {
+    VARS.with(|v| v.borrow().1.clone())
 }
 
 /// A running trace (module docs): variables, then formulas of what was computed from them.
-/// Dropping it frees the arena.
+/// Dropping it frees the arena. Its identity is unique in the process; like its
+/// expressions, it cannot leave its thread.
 #[derive(Debug)]
 pub struct Trace {
-    generation: u32,
+    generation: u64,
+    local: expr::ThreadBound,
 }
 
 impl Trace {
     /// Starts a trace on this thread (any earlier one's handles go stale).
     pub fn new() -> Trace {
-        NAMES.with(|n| n.borrow_mut().clear());
+        VARS.with(|v| {
+            let mut v = v.borrow_mut();
+            v.0.clear();
+            v.1.clear();
+        });
         let generation = ARENA.with(|a| {
             let mut a = a.borrow_mut();
             a.reset();
             a.generation
         });
-        Trace { generation }
+        Trace {
+            generation,
+            local: std::marker::PhantomData,
+        }
     }
 
     /// A variable named `name` with the value `value` at the trace point.
     pub fn var(&mut self, name: &str, value: f64) -> Expr {
-        let index = NAMES.with(|n| {
-            let mut n = n.borrow_mut();
-            n.push(name.to_string());
-            n.len() as u32 - 1
+        let index = VARS.with(|v| {
+            let mut v = v.borrow_mut();
+            v.0.push(name.to_string());
+            v.1.push(value);
+            v.0.len() as u32 - 1
         });
-        Expr::make(Node::Var(index), value)
+        Expr::make(Node::Var(index), value, &[])
     }
 
     fn live(&self) -> bool {
@@ -140,18 +158,26 @@ impl Trace {
     ///
     /// # Errors
     /// [`Error::TooLarge`] if the trace exceeded [`MAX_NODES`]; [`Error::Degenerate`] for a
-    /// handle of another (ended) trace.
+    /// handle of another trace (ended, or another thread's), or for any formula of a trace
+    /// that was given one; [`Error::FormulaCheck`] if the simplified formula does not equal
+    /// the traced value at the trace point.
     pub fn formula(&self, e: &Expr) -> Result<Formula> {
         self.check_live(std::slice::from_ref(e))?;
-        Formula::capture(e, &current_names())
+        Formula::capture(e, &current_names(), &current_point())
     }
 
     /// That the trace did not overflow and that every handle is this trace's.
     fn check_live(&self, es: &[Expr]) -> Result<()> {
-        let (overflowed, nodes) = ARENA.with(|a| {
+        let (overflowed, nodes, poisoned) = ARENA.with(|a| {
             let a = a.borrow();
-            (a.overflowed, a.nodes.len())
+            (a.overflowed, a.nodes.len(), a.poisoned)
         });
+        if poisoned {
+            return Err(Error::Degenerate {
+                what: "symbolic trace",
+                reason: "an expression of another trace (ended, or another thread's) was combined with this trace's: none of its formulas can be trusted",
+            });
+        }
         if overflowed {
             return Err(Error::TooLarge {
                 what: "expression nodes of a trace",
@@ -175,22 +201,52 @@ impl Trace {
     /// As [`Trace::formula`].
     pub fn formulas(&self, es: &[Expr]) -> Result<Vec<Formula>> {
         self.check_live(es)?;
-        Formula::capture_many(es, &current_names())
+        Formula::capture_many(es, &current_names(), &current_point())
+    }
+
+    /// The pieces the traced code picked by a value, as it recorded them
+    /// ([`claim::choose`]): the expression read (`t`, `u - 2`) and the interval of its values
+    /// on which the choice holds, in order.
+    pub fn pieces(&self) -> Vec<(String, Condition)> {
+        let claims = ARENA.with(|a| a.borrow().claims.clone());
+        let mut out: Vec<(String, Condition)> = Vec::new();
+        for (id, c) in claims {
+            let entry = (self.describe_node(id), c);
+            if !out.contains(&entry) {
+                out.push(entry);
+            }
+        }
+        out
+    }
+
+    /// The values the traced code read without recording a condition (`t = 0.3`): the
+    /// formulas hold at the trace point, and nothing is claimed beyond it.
+    pub fn unrecorded_reads(&self) -> Vec<String> {
+        let reads = ARENA.with(|a| a.borrow().reads.clone());
+        reads
+            .into_iter()
+            .map(|(id, value)| format!("{} = {}", self.describe_node(id), number(value)))
+            .collect()
+    }
+
+    /// The plain formula of node `id` of this trace (for conditions).
+    fn describe_node(&self, id: u32) -> String {
+        let e = Expr::from_id(id, f64::NAN, self.generation);
+        match Formula::capture(&e, &current_names(), &current_point()) {
+            Ok(f) => f.plain(),
+            Err(err) => format!("<{err}>"),
+        }
     }
 
     /// The conditions the numeric path took on the way (`s - 1/4 > 0`, …), in order.
     pub fn branches(&self) -> Vec<String> {
         let branches = ARENA.with(|a| a.borrow().branches.clone());
-        let names = current_names();
+        let (names, point) = (current_names(), current_point());
         branches
             .into_iter()
             .map(|(id, what, value)| {
-                let e = Expr {
-                    id,
-                    generation: self.generation,
-                    value,
-                };
-                match Formula::capture(&e, &names) {
+                let e = Expr::from_id(id, value, self.generation);
+                match Formula::capture(&e, &names, &point) {
                     Ok(f) => format!("{} {what}", f.plain()),
                     Err(err) => format!("<{err}> {what}"),
                 }

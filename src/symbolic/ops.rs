@@ -113,9 +113,11 @@ impl Signed for Expr {
         Expr::constant(self.value.signum())
     }
     fn is_positive(&self) -> bool {
+        self.branch(if self.value > 0.0 { "> 0" } else { "≤ 0" });
         self.value > 0.0
     }
     fn is_negative(&self) -> bool {
+        self.branch(if self.value < 0.0 { "< 0" } else { "≥ 0" });
         self.value < 0.0
     }
 }
@@ -172,7 +174,11 @@ impl From<f64> for Expr {
 impl DualStruct for Expr {
     type Real = f64;
     type Inner = Expr;
+    /// The value at the trace point; the read is recorded ([`crate::symbolic`]: a formula
+    /// whose code read a value other than through a recorded piece holds at the trace point
+    /// only).
     fn re(&self) -> f64 {
+        super::claim::note_read(self.id, self.generation, self.value);
         self.value
     }
     fn from_inner(inner: &Expr) -> Expr {
@@ -190,6 +196,8 @@ impl Mappable<Expr> for Expr {
 /// Comparisons follow the numeric values at the trace point (and are recorded as branches).
 impl PartialEq for Expr {
     fn eq(&self, other: &Expr) -> bool {
+        let d = Expr::sub(*self, *other);
+        d.branch(if d.value == 0.0 { "= 0" } else { "≠ 0" });
         self.value == other.value
     }
 }
@@ -204,6 +212,8 @@ impl PartialOrd for Expr {
 
 impl PartialEq<f64> for Expr {
     fn eq(&self, other: &f64) -> bool {
+        let d = Expr::sub(*self, Expr::constant(*other));
+        d.branch(if d.value == 0.0 { "= 0" } else { "≠ 0" });
         self.value == *other
     }
 }

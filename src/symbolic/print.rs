@@ -4,7 +4,7 @@
 //! rationals printed as fractions, others as the shortest decimal that reads back to the
 //! same `f64`.
 
-use super::canon::{Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+use super::canon::{atan2_bound, pow_bound, Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
 use super::display::escape;
 use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
@@ -12,31 +12,91 @@ use std::rc::Rc;
 
 /// A formula copied out of a trace and simplified ([`crate::symbolic`]): evaluate it, print it
 /// as plain text or LaTeX, multiply it out.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Formula {
     root: Sum,
     names: Vec<String>,
+    /// What the formula was checked against at capture, and every rewrite of it is again.
+    witness: Witness,
+}
+
+/// Two formulas are equal when they are the same expression in the same variables (wherever
+/// they were traced).
+impl PartialEq for Formula {
+    fn eq(&self, other: &Formula) -> bool {
+        self.root == other.root && self.names == other.names
+    }
+}
+
+/// The trace point, the value the traced code computed there and that computation's
+/// rounding bound (units of `ε`): a formula must give the same value within both bounds.
+#[derive(Debug, Clone, PartialEq)]
+struct Witness {
+    point: Vec<f64>,
+    traced: f64,
+    bound: f64,
+}
+
+/// Differences up to this many times the first-order rounding bounds (in units of `ε`) are
+/// accepted by the capture check: the bounds are worst cases of first order, so a true
+/// formula stays far inside; a wrong one (a rewrite that changes the value, a corrupted
+/// node) misses by far more.
+const CHECK_SLACK: f64 = 8.0;
+
+impl Witness {
+    /// That `root` gives the traced value at the trace point ([`Error::FormulaCheck`] if not).
+    /// A traced value that is not finite has no value to vouch for: accepted.
+    fn check(&self, root: &Sum, names: &[String]) -> Result<()> {
+        if !self.traced.is_finite() {
+            return Ok(());
+        }
+        let (value, bound) = root.eval_bound(&self.point);
+        let allowed = CHECK_SLACK * f64::EPSILON * (bound + self.bound) + 16.0 * f64::MIN_POSITIVE;
+        // a bound that is not finite (a pole within rounding) cannot refuse anything
+        if (value - self.traced).abs() <= allowed || !allowed.is_finite() {
+            return Ok(());
+        }
+        let mut formula = Printer {
+            style: Style::Plain,
+            names,
+        }
+        .sum(root);
+        if formula.chars().count() > 200 {
+            formula = formula.chars().take(200).collect::<String>() + "…";
+        }
+        Err(Error::FormulaCheck {
+            formula,
+            evaluated: value,
+            traced: self.traced,
+            bound: allowed,
+        })
+    }
 }
 
 impl Formula {
     /// The formula of `e`, copied out of the running trace and simplified, with variable
-    /// names `names`.
+    /// names `names` and values `point` at the trace point, checked against `e`'s value.
     ///
     /// # Errors
     /// [`Error::Degenerate`] for a handle of another trace; [`Error::TooLarge`] beyond
-    /// [`MAX_FORMULA_SIZE`] or [`MAX_FORMULA_DEPTH`].
-    pub(crate) fn capture(e: &Expr, names: &[String]) -> Result<Formula> {
-        let mut all = Formula::capture_many(std::slice::from_ref(e), names)?;
+    /// [`MAX_FORMULA_SIZE`] or [`MAX_FORMULA_DEPTH`]; [`Error::FormulaCheck`] if the
+    /// simplified formula does not give the traced value at the trace point.
+    pub(crate) fn capture(e: &Expr, names: &[String], point: &[f64]) -> Result<Formula> {
+        let mut all = Formula::capture_many(std::slice::from_ref(e), names, point)?;
         Ok(all.remove(0))
     }
 
     /// The formulas of `roots`, copied out of the running trace in one pass (subexpressions
-    /// they share are simplified once).
+    /// they share are simplified once), each checked against its traced value.
     ///
     /// # Errors
     /// As [`Formula::capture`].
-    pub(crate) fn capture_many(roots: &[Expr], names: &[String]) -> Result<Vec<Formula>> {
-        let sums = ARENA.with(|a| {
+    pub(crate) fn capture_many(
+        roots: &[Expr],
+        names: &[String],
+        point: &[f64],
+    ) -> Result<Vec<Formula>> {
+        let captured = ARENA.with(|a| {
             let a = a.borrow();
             if roots
                 .iter()
@@ -67,7 +127,66 @@ impl Formula {
             reach.sort_unstable();
             let mut done: FastMap<u32, Sum> = FastMap::default();
             done.reserve(reach.len());
+            // each node's value at the trace point as the traced code computed it, and that
+            // computation's rounding bound: the witness of the capture check
+            let mut traced: FastMap<u32, (f64, f64)> = FastMap::default();
+            traced.reserve(reach.len());
             for id in reach {
+                let v = |k: u32| traced[&k];
+                let bound = match a.nodes[id as usize] {
+                    Node::Num(c) => (c, 0.0),
+                    Node::Var(i) => (point.get(i as usize).copied().unwrap_or(f64::NAN), 0.0),
+                    Node::Add(x, y) => {
+                        let ((x, ex), (y, ey)) = (v(x), v(y));
+                        (x + y, ex + ey + (x + y).abs())
+                    }
+                    Node::Mul(x, y) => {
+                        let ((x, ex), (y, ey)) = (v(x), v(y));
+                        (x * y, y.abs() * ex + x.abs() * ey + (x * y).abs())
+                    }
+                    Node::Div(x, y) => {
+                        let ((x, ex), (y, ey)) = (v(x), v(y));
+                        let q = x / y;
+                        (q, (ex + q.abs() * ey) / y.abs() + q.abs())
+                    }
+                    Node::Neg(x) => {
+                        let (x, ex) = v(x);
+                        (-x, ex)
+                    }
+                    Node::Powi(x, n) => {
+                        let (x, ex) = v(x);
+                        let p = x.powi(n);
+                        let d = if ex == 0.0 {
+                            0.0
+                        } else {
+                            (f64::from(n) * x.powi(n - 1)).abs() * ex
+                        };
+                        (p, d + f64::from(n).abs() * p.abs())
+                    }
+                    Node::Powf(x, p) => {
+                        let (x, ex) = v(x);
+                        let r = x.powf(p);
+                        (r, pow_bound(x, ex, p, 0.0, r))
+                    }
+                    Node::Pow(x, y) => {
+                        let ((x, ex), (y, ey)) = (v(x), v(y));
+                        let r = x.powf(y);
+                        (r, pow_bound(x, ex, y, ey, r))
+                    }
+                    Node::Apply(f, x) => {
+                        let (x, ex) = v(x);
+                        let y = f.apply(x);
+                        (y, f.slope(x) * ex + 2.0 * y.abs())
+                    }
+                    Node::Atan2(y, x) => {
+                        let ((y, ey), (x, ex)) = (v(y), v(x));
+                        let r = y.atan2(x);
+                        (r, atan2_bound(y, ey, x, ex, r))
+                    }
+                    Node::Opaque(_, _, value) => (value, 0.0),
+                    Node::TooLarge => (f64::NAN, 0.0),
+                };
+                traced.insert(id, bound);
                 let s = |k: u32| &done[&k];
                 let sum = match a.nodes[id as usize] {
                     Node::Num(c) => Sum::num(c),
@@ -91,16 +210,28 @@ impl Formula {
             }
             Ok(roots
                 .iter()
-                .map(|e| done.get(&e.id).cloned().unwrap_or_default())
-                .collect::<Vec<Sum>>())
+                .map(|e| {
+                    let root = done.get(&e.id).cloned().unwrap_or_default();
+                    let witness = Witness {
+                        point: point.to_vec(),
+                        traced: e.value,
+                        bound: traced.get(&e.id).map_or(0.0, |t| t.1),
+                    };
+                    (root, witness)
+                })
+                .collect::<Vec<(Sum, Witness)>>())
         })?;
-        Ok(sums
+        captured
             .into_iter()
-            .map(|root| Formula {
-                root,
-                names: names.to_vec(),
+            .map(|(root, witness)| {
+                witness.check(&root, names)?;
+                Ok(Formula {
+                    root,
+                    names: names.to_vec(),
+                    witness,
+                })
             })
-            .collect())
+            .collect()
     }
 
     /// The number of nodes written out as a tree.
@@ -140,9 +271,11 @@ impl Formula {
             .expanded()
             .ok_or_else(|| too_large("nodes of an expanded formula", self.len()))?;
         check(&root)?;
+        self.witness.check(&root, &self.names)?;
         Ok(Formula {
             root,
             names: self.names.clone(),
+            witness: self.witness.clone(),
         })
     }
 
@@ -150,18 +283,22 @@ impl Formula {
     /// them: the polynomial or rational piece of a spline, which reads best in powers), over
     /// one common denominator where its denominators are powers of one polynomial (a NURBS
     /// piece and its derivatives: `(N′·D − N·D′)/D^2`), else
-    /// the formula as it is (the torus's `(2 + cos(t))*cos(s)`); also as it is where
-    /// multiplying out would exceed [`MAX_FORMULA_SIZE`].
+    /// the formula as it is (the torus's `cos(s)*(2 + cos(t))`); also as it is where
+    /// multiplying out would exceed [`MAX_FORMULA_SIZE`] or where the multiplied-out form
+    /// would not pass the capture check.
     pub fn tidy(&self) -> Formula {
         if !self.root.is_rational() {
             return self.clone();
         }
         match self.expanded() {
             Ok(f) => match f.root.over_common_denominator() {
-                Some(root) if check(&root).is_ok() => Formula {
-                    root,
-                    names: f.names,
-                },
+                Some(root) if check(&root).is_ok() && f.witness.check(&root, &f.names).is_ok() => {
+                    Formula {
+                        root,
+                        names: f.names,
+                        witness: f.witness,
+                    }
+                }
                 _ => f,
             },
             Err(_) => self.clone(),
@@ -268,7 +405,7 @@ pub fn number(c: f64) -> String {
 
 /// The plain text of a live expression (variables named as the running trace named them).
 pub(crate) fn plain(e: &Expr) -> String {
-    match Formula::capture(e, &super::current_names()) {
+    match Formula::capture(e, &super::current_names(), &super::current_point()) {
         Ok(f) => f.plain(),
         Err(err) => format!("<{err}>"),
     }
@@ -421,7 +558,11 @@ impl Printer<'_> {
                 // its bases and Codice 3 its torus (`2 + cos(t)`); then a positive term
                 // first where there is one
                 let mut order: Vec<&Term> = terms.iter().collect();
-                order.sort_by_key(|t| (degree(t), !t.factors.is_empty()));
+                order.sort_by(|a, b| {
+                    (degree(a), !a.factors.is_empty())
+                        .cmp(&(degree(b), !b.factors.is_empty()))
+                        .then_with(|| self.cmp_terms(a, b))
+                });
                 if order[0].coef < 0.0 {
                     if let Some(k) = order.iter().position(|t| t.coef >= 0.0) {
                         let first = order.remove(k);
@@ -465,7 +606,7 @@ impl Printer<'_> {
             }
             None => num.push(self.num(c)),
         }
-        for (a, e) in &t.factors {
+        for (a, e) in self.canonical(&t.factors) {
             if *e > 0.0 {
                 num.push(self.factor(a, *e));
             } else {
@@ -485,6 +626,51 @@ impl Printer<'_> {
             }
         };
         format!("{sign}{body}")
+    }
+
+    /// A product's factors in the one print order: variables (in the trace's order), then
+    /// functions, powers, groups (`sin(s)*(2 + cos(t))`), `atan2`, opaque nodes; within a kind, by the variables they
+    /// depend on (`cos(s)` before `sin(t)`), a function's name, then the printed text. So
+    /// `x·y` and `y·x` print alike wherever they occur.
+    fn canonical<'f>(&self, factors: &'f [(Rc<Atom>, f64)]) -> Vec<&'f (Rc<Atom>, f64)> {
+        let mut order: Vec<&(Rc<Atom>, f64)> = factors.iter().collect();
+        if order.len() > 1 {
+            order.sort_by(|x, y| self.cmp_atoms(&x.0, &y.0));
+        }
+        order
+    }
+
+    fn cmp_atoms(&self, a: &Atom, b: &Atom) -> std::cmp::Ordering {
+        let rank = |a: &Atom| match a {
+            Atom::Var(i) => (0, *i, 0, ""),
+            Atom::Func(f, _) => (1, 0, first_var(a), f.name()),
+            Atom::Pow(..) => (2, 0, first_var(a), ""),
+            Atom::Group(_) => (3, 0, first_var(a), ""),
+            Atom::Atan2(..) => (4, 0, first_var(a), ""),
+            Atom::Opaque(w, ..) => (5, 0, first_var(a), *w),
+        };
+        rank(a).cmp(&rank(b)).then_with(|| {
+            let plain = Printer {
+                style: Style::Plain,
+                names: self.names,
+            };
+            plain.atom(a).cmp(&plain.atom(b))
+        })
+    }
+
+    /// Terms in the one print order: their factors compared in order, then exponents, then
+    /// coefficients.
+    fn cmp_terms(&self, a: &Term, b: &Term) -> std::cmp::Ordering {
+        let (fa, fb) = (self.canonical(&a.factors), self.canonical(&b.factors));
+        for (x, y) in fa.iter().zip(&fb) {
+            let o = self.cmp_atoms(&x.0, &y.0).then_with(|| y.1.total_cmp(&x.1));
+            if o.is_ne() {
+                return o;
+            }
+        }
+        fa.len()
+            .cmp(&fb.len())
+            .then_with(|| a.coef.total_cmp(&b.coef))
     }
 
     /// Factors side by side: `*` in plain text; juxtaposed in LaTeX and MathML, with a dot
@@ -670,6 +856,22 @@ fn is_atomic(s: &Sum) -> bool {
     }
 }
 
+/// The smallest variable index an atom depends on (`u32::MAX` for none).
+fn first_var(a: &Atom) -> u32 {
+    let of_sum = |s: &Sum| {
+        s.terms
+            .iter()
+            .flat_map(|t| t.factors.iter().map(|(a, _)| first_var(a)))
+            .min()
+            .unwrap_or(u32::MAX)
+    };
+    match a {
+        Atom::Var(i) => *i,
+        Atom::Func(_, s) | Atom::Group(s) | Atom::Opaque(_, s, _) => of_sum(s),
+        Atom::Pow(x, y) | Atom::Atan2(x, y) => of_sum(x).min(of_sum(y)),
+    }
+}
+
 /// The total power of the variables in a term (a polynomial's degree; other factors count
 /// nothing).
 fn degree(t: &Term) -> u64 {
@@ -759,4 +961,37 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
             }
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Node, Trace};
+    use super::ARENA;
+    use crate::Error;
+
+    /// The capture check catches a formula that differs from what was traced: here a node
+    /// corrupted after the trace computed its value.
+    #[test]
+    fn the_capture_check_catches_a_corrupted_node() {
+        let mut trace = Trace::new();
+        let x = trace.var("x", 0.5);
+        let e = x * 2.0 + 1.0;
+        assert_eq!(trace.formula(&e).unwrap().plain(), "1 + 2*x");
+        ARENA.with(|a| {
+            for n in a.borrow_mut().nodes.iter_mut() {
+                if *n == Node::Num(2.0) {
+                    *n = Node::Num(3.0);
+                }
+            }
+        });
+        match trace.formula(&e) {
+            Err(Error::FormulaCheck {
+                evaluated, traced, ..
+            }) => {
+                assert_eq!(traced, 2.0);
+                assert_eq!(evaluated, 2.5);
+            }
+            other => panic!("not refused: {other:?}"),
+        }
+    }
 }

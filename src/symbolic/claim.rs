@@ -1,0 +1,242 @@
+//! Where a traced formula holds, as the traced code recorded it: the piece it chose by a value
+//! ([`choose`]), and every other read of a value, which may have chosen the formula too.
+//!
+//! Generic code reads `t.re()` to pick a piece of a piecewise object. Under a trace the value
+//! read is an expression's; the formula then holds only where the same piece would be picked.
+//! The one honest record of that is made where the piece is picked: [`choose`] reads the
+//! value and records, in the same step, the interval on which the choice holds — so the claim
+//! and the branch taken cannot differ. A value read any other way (`re()` in the code, or in
+//! num-dual's own functions, such as `sph_j0` near 0) is recorded as a read without a
+//! condition: the formula is then claimed at the trace point only. A read that provably does
+//! not choose the formula (an expansion point, two equal forms of one polynomial) goes through
+//! [`read_quietly`].
+
+use super::expr::ARENA;
+use crate::domain::Span;
+use num_dual::DualStruct;
+
+/// An interval of values of an expression: the condition under which a traced formula holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Condition {
+    /// The left end (`−∞` for none).
+    pub lo: f64,
+    /// Whether `lo` belongs to it.
+    pub lo_closed: bool,
+    /// The right end (`+∞` for none).
+    pub hi: f64,
+    /// Whether `hi` belongs to it.
+    pub hi_closed: bool,
+}
+
+impl Condition {
+    /// Every value below `hi` (`hi` included if `closed`).
+    pub fn below(hi: f64, closed: bool) -> Condition {
+        Condition {
+            lo: f64::NEG_INFINITY,
+            lo_closed: false,
+            hi,
+            hi_closed: closed,
+        }
+    }
+
+    /// Every value above `lo` (`lo` included if `closed`).
+    pub fn above(lo: f64, closed: bool) -> Condition {
+        Condition {
+            lo,
+            lo_closed: closed,
+            hi: f64::INFINITY,
+            hi_closed: false,
+        }
+    }
+
+    /// Whether `x` satisfies it.
+    pub fn contains(&self, x: f64) -> bool {
+        let left = if self.lo_closed {
+            x >= self.lo
+        } else {
+            x > self.lo
+        };
+        let right = if self.hi_closed {
+            x <= self.hi
+        } else {
+            x < self.hi
+        };
+        left && right
+    }
+
+    /// The condition on `what`: `t ∈ [1/4, 1/2)`, `t < 0`, `t ≥ 3`.
+    pub fn describe(&self, what: &str) -> String {
+        use super::number;
+        match (self.lo.is_finite(), self.hi.is_finite()) {
+            (true, true) => format!(
+                "{what} ∈ {}{}, {}{}",
+                if self.lo_closed { '[' } else { '(' },
+                number(self.lo),
+                number(self.hi),
+                if self.hi_closed { ']' } else { ')' }
+            ),
+            (false, true) => format!(
+                "{what} {} {}",
+                if self.hi_closed { "≤" } else { "<" },
+                number(self.hi)
+            ),
+            (true, false) => format!(
+                "{what} {} {}",
+                if self.lo_closed { "≥" } else { ">" },
+                number(self.lo)
+            ),
+            (false, false) => format!("{what} any"),
+        }
+    }
+
+    /// As a [`Span`] (`[lo, hi)` or `[lo, hi]`), if it is a finite interval closed on the left.
+    pub fn as_span(&self) -> Option<Span> {
+        (self.lo.is_finite() && self.hi.is_finite() && self.lo_closed).then_some(Span {
+            lo: self.lo,
+            hi: self.hi,
+            closed: self.hi_closed,
+        })
+    }
+}
+
+impl From<Span> for Condition {
+    fn from(s: Span) -> Condition {
+        Condition {
+            lo: s.lo,
+            lo_closed: true,
+            hi: s.hi,
+            hi_closed: s.closed,
+        }
+    }
+}
+
+/// How an expression's value read through `re()` is recorded.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) enum ReadMode {
+    /// A read without a condition (the formula is claimed at the trace point only).
+    #[default]
+    Unrecorded,
+    /// Inside [`choose`]: the node read is kept for its condition.
+    Piece(Option<u32>),
+    /// Inside [`read_quietly`]: not recorded.
+    Quiet,
+}
+
+/// Records that the value of node `id` (of trace `generation`) was read through `re()`.
+pub(crate) fn note_read(id: u32, generation: u64, value: f64) {
+    ARENA.with(|a| {
+        let mut a = a.borrow_mut();
+        if a.generation != generation || !a.live {
+            return;
+        }
+        if matches!(a.nodes.get(id as usize), Some(super::Node::Num(_)) | None) {
+            // a constant's value chooses nothing
+            return;
+        }
+        match a.read_mode {
+            ReadMode::Piece(_) => a.read_mode = ReadMode::Piece(Some(id)),
+            ReadMode::Quiet => {}
+            ReadMode::Unrecorded => {
+                if !a.reads.iter().any(|&(i, _)| i == id) {
+                    a.reads.push((id, value));
+                }
+            }
+        }
+    })
+}
+
+/// Picks by the value of `t`: `pick(x)` gives the choice made for the value `x` and the set
+/// of values on which that choice holds (it must contain `x`). Under a symbolic trace the set
+/// is recorded as the condition on the expression read, in the same step as the choice, so
+/// the formulas of the trace claim exactly the piece the code picked.
+pub(crate) fn choose<D: DualStruct<Real = f64>, R>(
+    t: &D,
+    pick: impl FnOnce(f64) -> (R, Condition),
+) -> R {
+    if !super::tracing() {
+        return pick(t.re()).0;
+    }
+    let before = ARENA.with(|a| {
+        let mut a = a.borrow_mut();
+        std::mem::replace(&mut a.read_mode, ReadMode::Piece(None))
+    });
+    let x = t.re();
+    let (choice, condition) = pick(x);
+    ARENA.with(|a| {
+        let mut a = a.borrow_mut();
+        if let ReadMode::Piece(Some(id)) = a.read_mode {
+            a.claims.push((id, condition));
+        }
+        a.read_mode = before;
+    });
+    choice
+}
+
+/// The value of `t` for a use that does not choose the formula (an expansion point, a choice
+/// between two forms of one function): not recorded as a condition.
+pub(crate) fn read_quietly<D: DualStruct<Real = f64>>(t: &D) -> f64 {
+    if !super::tracing() {
+        return t.re();
+    }
+    let before = ARENA.with(|a| std::mem::replace(&mut a.borrow_mut().read_mode, ReadMode::Quiet));
+    let x = t.re();
+    ARENA.with(|a| a.borrow_mut().read_mode = before);
+    x
+}
+
+/// The piece `k` of increasing `nodes` holding `t` ([`crate::domain::locate`]), recorded as
+/// the formula's condition: `[nodes[k], nodes[k + 1])` (the last closed) inside the domain,
+/// and for a value beyond it the end piece extended to `∓∞` (which piecewise objects
+/// extrapolate).
+pub(crate) fn piece<D: DualStruct<Real = f64>>(nodes: &[f64], t: &D) -> usize {
+    choose(t, |x| {
+        let k = crate::domain::locate(nodes, x);
+        (k, piece_condition(nodes, k, x))
+    })
+}
+
+/// The piece `j = ⌊t⌋` of the unit pieces `[0, 1)`, …, `[n − 1, n]` holding `t` (the right end
+/// in the last; outside, the end pieces, and NaN the first), recorded as [`piece`] records it.
+pub(crate) fn unit_piece<D: DualStruct<Real = f64>>(n: usize, t: &D) -> usize {
+    choose(t, |x| {
+        let j = unit_index(x, n);
+        let mut c = Condition::from(Span {
+            lo: j as f64,
+            hi: j as f64 + 1.0,
+            closed: j + 1 >= n,
+        });
+        if j == 0 && x < 0.0 {
+            c.lo = f64::NEG_INFINITY;
+            c.lo_closed = false;
+        }
+        if j + 1 >= n && x > n as f64 {
+            c.hi = f64::INFINITY;
+            c.hi_closed = false;
+        }
+        (j, c)
+    })
+}
+
+/// `⌊x⌋` clamped to `0 … n − 1` (NaN and negative values to 0).
+pub(crate) fn unit_index(x: f64, n: usize) -> usize {
+    if x.is_nan() || x <= 0.0 {
+        0
+    } else {
+        (x.floor() as usize).min(n.saturating_sub(1))
+    }
+}
+
+/// The condition of piece `k` for the value `x` (see [`piece`]).
+pub(crate) fn piece_condition(nodes: &[f64], k: usize, x: f64) -> Condition {
+    let last = nodes.len() - 2;
+    let mut c = Condition::from(Span::of(nodes, k));
+    if k == 0 && x < nodes[0] {
+        c.lo = f64::NEG_INFINITY;
+        c.lo_closed = false;
+    }
+    if k == last && x > nodes[last + 1] {
+        c.hi = f64::INFINITY;
+        c.hi_closed = false;
+    }
+    c
+}
