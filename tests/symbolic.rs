@@ -576,7 +576,8 @@ fn curve_formulas_hold_on_their_piece() {
                 assert!((g.d2[k].eval(&[t]) - d2[k]).abs() <= 1e-9 * d2.norm().max(1.0));
             }
             // a cubic piece: the second derivative is linear, the formula a polynomial
-            assert!(!g.d2[0].plain().contains('/'));
+            let d2 = g.d2[0].plain();
+            assert!(!d2.contains("/(") && !d2.contains("/t"), "{d2}");
         }
     }
     assert!(matches!(
@@ -934,4 +935,91 @@ proptest! {
             }
         }
     }
+}
+
+// ---- issue 24: formulas as a person writes them ----
+
+#[test]
+fn identities_a_reader_expects() {
+    let out = trace([("t", 0.3), ("x", 0.7)], |[t, x]| {
+        let d = num_dual::Dual::new(t, Expr::constant(1.0));
+        vec![
+            d.tanh().eps,
+            x.sin() * x.sin() + x.cos() * x.cos(),
+            t.cosh().powi(2) * 3.0 - t.sinh().powi(2) * 3.0 + x,
+            (x * 2.0).sin().powi(2) * t + t * (x * 2.0).cos().powi(2),
+        ]
+    })
+    .unwrap();
+    let texts: Vec<String> = out.formulas.iter().map(|f| f.plain()).collect();
+    assert_eq!(texts, ["1/cosh(t)^2", "1", "3 + x", "t"]);
+}
+
+#[test]
+fn rounding_residue_prints_as_the_number_it_stands_for() {
+    let out = trace([("s", 0.3), ("t", 0.7)], |[s, t]| {
+        vec![
+            s * s * t * t * (0.1 + 0.2 + 0.3),
+            (s + 0.1 + 0.2 - 0.3) * 64.0 - s * 64.0,
+        ]
+    })
+    .unwrap();
+    assert_eq!(out.formulas[0].plain(), "3*s^2*t^2/5");
+    assert_eq!(out.formulas[1].plain(), "0");
+    // a NURBS arc's numerator has no 5.6e-17 constant term, and a tiny constant that is
+    // real prints with an exponent, not seventeen zeros
+    let circle = NurbsCurve::circle9(nalgebra::Vector2::new(0.0, 0.0), 1.0).unwrap();
+    let f = curve_formulas(&circle, 0.1).unwrap();
+    assert!(f.point[0].plain().starts_with("("), "{}", f.point[0]);
+    assert!(!f.point[0].plain().contains("e-1"), "{}", f.point[0]);
+    assert_eq!(number(5.551115123125783e-17), "5.551115123125783e-17");
+}
+
+#[test]
+fn a_polynomial_piece_in_its_local_variable_keeps_its_digits() {
+    // degree 5, the interior span [1.21, 1.5] (the review's case)
+    let mut knots = vec![0.0; 6];
+    knots.extend([1.21, 1.5]);
+    knots.extend(vec![2.0; 6]);
+    let basis = BSplineBasis::new(KnotVector::new(knots), 5);
+    let pts: Vec<nalgebra::Vector2<f64>> = (0..8)
+        .map(|i| nalgebra::Vector2::new(i as f64 * 0.3, ((i * 3) % 4) as f64 * 0.7))
+        .collect();
+    let curve = BSplineCurve::new(basis, pts);
+    let local = splinelab::symbolic::curve_formulas_local(&curve, 1.3).unwrap();
+    assert_eq!(local.origin, Some(1.21));
+    assert_eq!(local.point[0].names(), ["u"]);
+    assert!(local
+        .table()
+        .notes
+        .iter()
+        .any(|n| n.contains("u = t - 1.21")));
+    let global = curve_formulas(&curve, 1.3).unwrap();
+    let (mut worst_local, mut worst_global) = (0.0f64, 0.0f64);
+    for k in 0..=20 {
+        let t = 1.21 + 0.29 * k as f64 / 20.0;
+        let want = curve.point(t);
+        for c in 0..2 {
+            let scale = want[c].abs().max(1.0);
+            worst_local =
+                worst_local.max((local.point[c].eval(&[t - 1.21]) - want[c]).abs() / scale);
+            worst_global = worst_global.max((global.point[c].eval(&[t]) - want[c]).abs() / scale);
+        }
+    }
+    assert!(worst_local <= 1e-14, "local {worst_local:e}");
+    assert!(worst_global <= 1e-10, "global {worst_global:e}");
+}
+
+#[test]
+fn latex_brackets_only_where_precedence_needs_them() {
+    let out = trace([("t", 0.3)], |[t]| {
+        vec![(t + 1.0) / (t * t + 2.0), t / (t + 1.0).powi(2)]
+    })
+    .unwrap();
+    assert_eq!(out.formulas[0].latex(), "\\frac{1 + t}{2 + t^{2}}");
+    assert_eq!(
+        out.formulas[1].latex(),
+        "\\frac{t}{\\left(1 + t\\right)^{2}}"
+    );
+    assert_eq!(out.formulas[0].plain(), "(1 + t)/(2 + t^2)");
 }

@@ -273,8 +273,14 @@ impl BSplineBasis {
             return;
         }
         // the expansion point (the piece was picked by the span): any point of the span gives
-        // the same polynomial
-        let t0 = crate::symbolic::claim::read_quietly(&t);
+        // the same polynomial. Numbers expand at t itself (the most accurate value there);
+        // a traced formula at the span's start t_ℓ, so its coefficients are the exact Taylor
+        // coefficients there and the piece reads in u = t − t_ℓ without cancellation
+        let t0 = if crate::symbolic::tracing() {
+            k[span]
+        } else {
+            crate::symbolic::claim::read_quietly(&t)
+        };
         // the Taylor expansion stops at NDERIV: exact for dual numbers of plain numbers,
         // whose part beyond the real one is nilpotent. Under a symbolic trace the real part
         // itself is a formula in t, so the span polynomial is expanded to its full degree p

@@ -501,7 +501,39 @@ impl Sum {
             }
         }
         out.retain(|t| t.coef != 0.0);
+        if let Some(fewer) = pythagoras(&out) {
+            // an identity merged two terms: the result may be like another term
+            return Sum::collect(fewer.into_iter());
+        }
         Sum::from_terms(out)
+    }
+
+    /// This sum with every coefficient within a few units in the last place of a simple
+    /// fraction (denominator ≤ 64) set to it, every term whose coefficient is rounding
+    /// residue beside the others' (below `16 ε` of the largest) dropped — inside functions
+    /// and groups too — and a sum that is only a constant of at most `floor` (the rounding of
+    /// the traced computation that cancelled to it) made `0`. Whether the result still gives the traced value is for the capture
+    /// check to say ([`crate::symbolic::Formula`] keeps the unrounded form if not).
+    pub(crate) fn snapped(&self, floor: f64) -> Sum {
+        if self.terms.iter().any(|t| !t.coef.is_finite()) {
+            return self.clone();
+        }
+        let largest = self.terms.iter().map(|t| t.coef.abs()).fold(0.0, f64::max);
+        let terms: Vec<Term> = self
+            .terms
+            .iter()
+            .filter(|t| self.terms.len() == 1 || t.coef.abs() > RESIDUE * largest)
+            .filter(|t| self.terms.len() > 1 || !t.factors.is_empty() || t.coef.abs() > floor)
+            .map(|t| Term {
+                coef: snap(t.coef),
+                factors: t
+                    .factors
+                    .iter()
+                    .map(|(a, e)| (Rc::new(a.snapped()), *e))
+                    .collect(),
+            })
+            .collect();
+        Sum::collect(terms.into_iter())
     }
 
     /// `−a`.
@@ -740,7 +772,122 @@ impl Sum {
     }
 }
 
+/// A coefficient below this fraction of the largest in its sum is rounding residue.
+const RESIDUE: f64 = 16.0 * f64::EPSILON;
+
+/// The most units in the last place a coefficient may be from a simple fraction to be set to
+/// it.
+const SNAP_ULPS: f64 = 32.0;
+
+/// `c`, or the fraction `p/q` (`q ≤ 64`, `|p| < 10¹⁵`) within [`SNAP_ULPS`] of it.
+fn snap(c: f64) -> f64 {
+    if !c.is_finite() || c == 0.0 || c.fract() == 0.0 {
+        return c;
+    }
+    let ulp = f64::EPSILON * c.abs();
+    for q in 1..=64u32 {
+        let p = (c * f64::from(q)).round();
+        if p.abs() >= 1e15 {
+            break;
+        }
+        let r = p / f64::from(q);
+        if (r - c).abs() <= SNAP_ULPS * ulp {
+            return r;
+        }
+    }
+    c
+}
+
+/// The partner of `sin²`, `cos²`, `cosh²`, `sinh²` in a Pythagorean identity and the ratio of
+/// coefficients it needs: `sin² + cos² = 1`, `cosh² − sinh² = 1`.
+fn partner(f: Func) -> Option<(Func, f64)> {
+    match f {
+        Func::Sin => Some((Func::Cos, 1.0)),
+        Func::Cos => Some((Func::Sin, 1.0)),
+        Func::Cosh => Some((Func::Sinh, -1.0)),
+        Func::Sinh => Some((Func::Cosh, -1.0)),
+        _ => None,
+    }
+}
+
+/// The terms with one Pythagorean pair merged (`c·R·sin²u + c·R·cos²u = c·R`,
+/// `c·R·cosh²u − c·R·sinh²u = c·R`), or `None` if there is none. Only squares, only equal
+/// rests `R` and matching coefficients: an identity, never an approximation.
+fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
+    let square = |t: &Term, k: usize| match &t.factors[k] {
+        (a, e) if *e == 2.0 => match a.as_ref() {
+            Atom::Func(f, u) => partner(*f).map(|p| (*f, p, u.clone())),
+            _ => None,
+        },
+        _ => None,
+    };
+    let rest = |t: &Term, k: usize| {
+        let mut r = t.clone();
+        r.factors.remove(k);
+        r
+    };
+    let candidates: Vec<(usize, usize)> = terms
+        .iter()
+        .enumerate()
+        .flat_map(|(i, t)| (0..t.factors.len()).map(move |k| (i, k)))
+        .filter(|&(i, k)| square(&terms[i], k).is_some())
+        .collect();
+    for &(i, k) in &candidates {
+        let Some((f, (g, ratio), u)) = square(&terms[i], k) else {
+            continue;
+        };
+        let ri = rest(&terms[i], k);
+        for &(j, l) in &candidates {
+            if j == i {
+                continue;
+            }
+            let Some((h, _, v)) = square(&terms[j], l) else {
+                continue;
+            };
+            if h != g || v != u || terms[j].coef != ratio * terms[i].coef {
+                continue;
+            }
+            let rj = rest(&terms[j], l);
+            if !ri.like(&rj) {
+                continue;
+            }
+            // sin² and cos² (or cosh² and −sinh²): the pair is the rest times the first's
+            // coefficient; for sinh² first (c·sinh² − c·cosh²) it is −c
+            let coef = if f == Func::Sinh {
+                -terms[i].coef
+            } else {
+                terms[i].coef
+            };
+            let mut out: Vec<Term> = Vec::with_capacity(terms.len() - 1);
+            for (m, t) in terms.iter().enumerate() {
+                if m == i {
+                    out.push(Term {
+                        coef,
+                        factors: ri.factors.clone(),
+                    });
+                } else if m != j {
+                    out.push(t.clone());
+                }
+            }
+            return Some(out);
+        }
+    }
+    None
+}
+
 impl Atom {
+    /// The atom with its sums [snapped](Sum::snapped).
+    fn snapped(&self) -> Atom {
+        match self {
+            Atom::Var(i) => Atom::Var(*i),
+            Atom::Func(f, a) => Atom::Func(*f, a.snapped(0.0)),
+            Atom::Group(a) => Atom::Group(a.snapped(0.0)),
+            Atom::Pow(a, b) => Atom::Pow(a.snapped(0.0), b.snapped(0.0)),
+            Atom::Atan2(a, b) => Atom::Atan2(a.snapped(0.0), b.snapped(0.0)),
+            Atom::Opaque(w, a, v) => Atom::Opaque(w, a.snapped(0.0), *v),
+        }
+    }
+
     fn expanded(&self) -> Option<Atom> {
         Some(match self {
             Atom::Var(i) => Atom::Var(*i),

@@ -185,9 +185,17 @@ pub struct CurveFormulas {
     /// Where the formulas hold, as recorded ([`Traced::branches`]): the pieces, the
     /// branches, and `only at t = …` when the code read `t` without recording a condition.
     pub branches: Vec<String>,
+    /// `Some(tᵢ)` when the formulas are written in the piece's local variable `u = t − tᵢ`
+    /// ([`curve_formulas_local`]); `None` for the global `t` ([`curve_formulas`]).
+    pub origin: Option<f64>,
 }
 
 impl CurveFormulas {
+    /// Whether the formulas are claimed at the trace point only.
+    fn branches_pointwise(&self) -> bool {
+        self.branches.iter().any(|b| b.starts_with("only at "))
+    }
+
     /// Rows `C`, `C′`, `C″` by coordinate; the piece and branches as notes.
     pub fn table(&self) -> MathTable {
         let coords = ["x", "y", "z", "w"];
@@ -207,10 +215,17 @@ impl CurveFormulas {
             row
         })
         .collect();
+        let mut notes = holds_where(&self.branches);
+        if let Some(o) = self.origin {
+            notes.push(format!(
+                "In the piece's local variable u = {}.",
+                local_variable(o)
+            ));
+        }
         MathTable {
             header,
             rows,
-            notes: holds_where(&self.branches),
+            notes,
         }
     }
 
@@ -234,20 +249,7 @@ pub fn curve_formulas<const N: usize, C: ParametricCurve<N> + ?Sized>(
     t: f64,
 ) -> Result<CurveFormulas> {
     crate::error::finite("trace point", t)?;
-    let traced = trace([("t", t)], |[tv]| {
-        let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
-        let c = curve.eval(Dual2::new(tv, one, zero));
-        let mut out: Vec<Expr> = c.iter().map(|d| d.re).collect();
-        out.extend(c.iter().map(|d| d.v1));
-        // num-dual's Dual2 carries f″ in v2
-        out.extend(c.iter().map(|d| d.v2));
-        out
-    })?;
-    let f = traced
-        .formulas
-        .iter()
-        .map(Formula::tidy)
-        .collect::<Vec<_>>();
+    let (traced, f) = trace_curve(curve, "t", t, 0.0)?;
     let span = traced
         .pieces
         .iter()
@@ -259,6 +261,84 @@ pub fn curve_formulas<const N: usize, C: ParametricCurve<N> + ?Sized>(
         d2: f[2 * N..].to_vec(),
         span,
         branches: traced.branches,
+        origin: None,
+    })
+}
+
+/// The trace of `C`, `C′`, `C″` at `t = origin + v`, the variable `v` named `name` with the
+/// value `value`; the formulas [tidied](Formula::tidy), coordinates of `C`, then `C′`, `C″`.
+fn trace_curve<const N: usize, C: ParametricCurve<N> + ?Sized>(
+    curve: &C,
+    name: &str,
+    value: f64,
+    origin: f64,
+) -> Result<(Traced, Vec<Formula>)> {
+    let traced = trace([(name, value)], |[v]| {
+        let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
+        let c = curve.eval(Dual2::new(v + origin, one, zero));
+        let mut out: Vec<Expr> = c.iter().map(|d| d.re).collect();
+        out.extend(c.iter().map(|d| d.v1));
+        // num-dual's Dual2 carries f″ in v2
+        out.extend(c.iter().map(|d| d.v2));
+        out
+    })?;
+    let f = traced.formulas.iter().map(Formula::tidy).collect();
+    Ok((traced, f))
+}
+
+/// `t - 2`, `t + 1/4`, `t` for the origin `2`, `−1/4`, `0`.
+fn local_variable(origin: f64) -> String {
+    if origin == 0.0 {
+        "t".into()
+    } else if origin < 0.0 {
+        format!("t + {}", super::number(-origin))
+    } else {
+        format!("t - {}", super::number(origin))
+    }
+}
+
+/// [`curve_formulas`] in the local variable of the piece that holds `t`, `u = t − tᵢ` with
+/// `tᵢ` the piece's start, as the seeds write a piece (`u ∈ [0, tᵢ₊₁ − tᵢ)`): a polynomial
+/// piece far from 0 printed in powers of the global `t` amplifies its rounding (a degree-5
+/// B-spline piece on `[1.21, 1.5]` loses four digits), in powers of `u` it does not. The
+/// conditions stay in `t`; where the code recorded no finite piece the origin is 0 (the
+/// global variable, said in `origin`).
+///
+/// ```
+/// use nalgebra::Vector2;
+/// use splinelab::{BSplineCurve, symbolic::curve_formulas_local};
+/// let pts: Vec<_> = (0..6).map(|i| Vector2::new(i as f64, (i % 2) as f64)).collect();
+/// let curve = BSplineCurve::with_order(pts, 4)?;
+/// let f = curve_formulas_local(&curve, 2.5)?;
+/// assert_eq!(f.origin, Some(2.0));
+/// assert!(f.point[0].names() == ["u"]);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`curve_formulas`].
+pub fn curve_formulas_local<const N: usize, C: ParametricCurve<N> + ?Sized>(
+    curve: &C,
+    t: f64,
+) -> Result<CurveFormulas> {
+    let global = curve_formulas(curve, t)?;
+    let origin = global.span.map_or(0.0, |s| s.lo);
+    let (traced, f) = trace_curve(curve, "u", t - origin, origin)?;
+    let pointwise = global.branches_pointwise();
+    let mut branches = global.branches;
+    if traced.pointwise && !pointwise {
+        branches.push(format!(
+            "only at t = {}: the code read a value without recording a condition",
+            super::number(t)
+        ));
+    }
+    Ok(CurveFormulas {
+        point: f[..N].to_vec(),
+        d1: f[N..2 * N].to_vec(),
+        d2: f[2 * N..].to_vec(),
+        span: global.span,
+        branches,
+        origin: Some(origin),
     })
 }
 

@@ -26,38 +26,68 @@
 //! comparisons and `abs` follow the numeric path. A [`Trace`] owns the arena: it is emptied
 //! when a trace starts and freed when it ends, so a long session does not grow; a trace holds
 //! at most [`MAX_NODES`] nodes ([`crate::Error::TooLarge`] beyond). One trace per thread at a
-//! time: starting another makes the first one's handles stale, and their formulas are refused.
+//! time.
+//!
+//! **Trust.** Nothing is printed that was not checked.
+//! - *Identity*: every trace has an identity unique in the process (a global counter, as
+//!   CppAD's tape ids), every handle names it, and handles and traces cannot leave their
+//!   thread (`Expr` is neither `Send` nor `Sync`). A handle of an ended trace is refused; an
+//!   operation given one (`old + y`) poisons the running trace, and every formula of it is
+//!   then [`crate::Error::Degenerate`].
+//! - *Capture check*: each formula, simplified, is evaluated at the trace point and compared
+//!   with the value the traced code computed, within 8 ε times the sum of both computations'
+//!   first-order rounding bounds ([`crate::Error::FormulaCheck`] beyond). Multiplied-out and
+//!   cleaned forms are checked again; a cleaned form that fails is not used.
+//! - *Where it holds*: see **Branches**.
 //!
 //! **Simplification** (on capture, into a normal form: a sum of terms, each a coefficient times
-//! a product of powers): constants folded and multiplied into sums; like terms collected
-//! (`x·y + 2y·x = 3x·y`); equal bases merged by their exponents (`x²·x⁻¹ = x`,
-//! `√(1+x²)·√(1+x²) = 1 + x²`); `0` and `1` removed; a sum that is a factor keeps its sign
-//! outside (`(−a − b)·c = −(a + b)·c`); `√(x²)` stays (it is `|x|`, not `x`). Printing pulls
-//! out the factors every term of a sum shares, other than powers of a variable, and a common
-//! minus sign (`−sin s·cos t − 2 sin s = −sin(s)*(2 + cos(t))`); it orders a sum by ascending
-//! powers with constants first and a positive term leading (the report's
-//! `1 - 3*t^2 + 2*t^3`, `t^3 - t^2`; Codice 3's `2 + cos(t)`), and a product's factors in the
-//! order the traced code produced them. Polynomial and rational pieces (splines, bases, a
-//! patch) are multiplied out in powers of the variables ([`Formula::tidy`],
-//! [`Formula::expanded`]), over one denominator where all denominators are powers of one
-//! polynomial (a NURBS piece's derivatives: `(N′·D − N·D′)/D^2`); other formulas keep their
-//! products (`cos(s)*(2 + cos(t))`). *Not done:* trigonometric and other function
-//! identities (`sin² + cos² = 1`), common denominators of different polynomials, cancelling
-//! common factors of a numerator and denominator, factoring polynomials, and
-//! cleaning the rounding residue of the traced `f64` arithmetic (a coefficient that is `0` in
-//! exact arithmetic can print as `4.9e-17`).
+//! a product of powers). Every rule's right side is defined, and equal, wherever its left side
+//! is:
+//! - constants folded and multiplied into sums; `0` and `1` removed;
+//! - like terms collected, factors compared as multisets (`x·y + 2y·x = 3x·y`,
+//!   `sin(x + y) − sin(y + x) = 0`);
+//! - equal bases merged by their exponents (`x²·x⁻¹ = x`, `√(1+x²)·√(1+x²) = 1 + x²`);
+//! - `(x·y)ⁿ = xⁿ·yⁿ` and `(xᵃ)ⁿ = xᵃⁿ` for integer `n`; `(c·x·y)ᵖ = cᵖ·xᵖ·yᵖ` for real `p`
+//!   only when `c > 0` and every base is `≥ 0` by its structure (`exp`, `cosh`, `|·|`, `acos`,
+//!   sums of such): `√(s·t)` stays whole (at `s = t = −1` it is 1, `√s·√t` is not real), and
+//!   `√(x²)` stays (it is `|x|`);
+//! - the Pythagorean identities on squares with equal rests and matching coefficients:
+//!   `c·R·sin²u + c·R·cos²u = c·R`, `c·R·cosh²u − c·R·sinh²u = c·R` (so `d/dt tanh t` is
+//!   `1/cosh(t)^2`);
+//! - a sum that is a factor keeps its sign outside (`(−a − b)·c = −(a + b)·c`);
+//! - rounding residue cleaned where the capture check allows it: a coefficient within 32 ulps
+//!   of a fraction with denominator ≤ 64 becomes it (`3/5`, not `0.6000000000000001`), a
+//!   coefficient below 16 ε of the largest in its sum is dropped, and a formula that is only
+//!   a constant within the traced computation's own rounding is `0`.
+//!
+//! Polynomial and rational pieces (splines, bases, a patch) are multiplied out in powers of
+//! the variables ([`Formula::tidy`], [`Formula::expanded`]), over one denominator where all
+//! denominators are powers of one polynomial (a NURBS piece's derivatives:
+//! `(N′·D − N·D′)/D^2`); other formulas keep their products (`cos(s)*(2 + cos(t))`).
+//! [`curve_formulas`] prints a piece in the global `t`; [`curve_formulas_local`] in the
+//! piece's local variable `u = t − tᵢ`, which keeps the digits a power form in `t` loses far
+//! from 0. *Not done:* other function identities (`sin 2x = 2 sin x cos x`), common
+//! denominators of different polynomials, cancelling common factors of a numerator and
+//! denominator other than equal bases, factoring polynomials.
 //!
 //! **Printing.** Plain text with ASCII operators ([`Formula::plain`]: `-sin(s)*(2 + cos(t))`,
 //! `3*t^2/2`, readable back by a parser with the usual precedence), LaTeX
 //! ([`Formula::latex`]) and presentation MathML ([`Formula::mathml`], which browsers render
 //! without a script: a notebook's HTML copy shows it); brackets only where precedence needs
-//! them; a constant that is exactly a small rational prints as a fraction (`1/4`), others as
-//! the shortest decimal that reads back to the same `f64` ([`number`]).
+//! them (none around a sum alone above or below a fraction bar); one print order — a
+//! product's variables first, then functions, powers and groups, each by the variables they
+//! depend on (`-cos(s)*sin(t)` wherever that product occurs); a sum by ascending powers with
+//! constants first and a positive term leading (the report's `1 - 3*t^2 + 2*t^3`); a constant
+//! that is exactly a small rational prints as a fraction (`1/4`), others as the shortest
+//! decimal that reads back to the same `f64`, with an exponent below `10⁻⁴` ([`number`]).
 //!
-//! **Branches.** Where the numeric path branched on a value (`abs`, `signum`, comparisons),
-//! the condition is recorded ([`Trace::branches`]); piecewise curves and surfaces name the
-//! piece the formula holds on (`s ∈ [1/4, 1/2)`, [`crate::ParametricCurve::span_at`]): no
-//! formula is presented as valid beyond them.
+//! **Branches.** A formula claims no more than the traced code recorded. Where the code picks
+//! a piece by a value, it does so through one helper that picks and records the interval the
+//! choice holds for, so the claim cannot differ from the branch taken (`t ∈ [1/4, 1/2)`, the
+//! Angular spline's `t > 3` beyond its end: [`Trace::pieces`]). Comparisons, `abs`,
+//! `signum` and `is_positive` record their condition ([`Trace::branches`]). Any other read
+//! of a value (`re()` in a user's curve, num-dual's `sph_j0` near 0) is recorded as such
+//! ([`Trace::unrecorded_reads`]), and the formulas are then claimed at the trace point only.
 //!
 //! **Limits.** [`MAX_NODES`] per trace; a formula written out as a tree at most
 //! [`MAX_FORMULA_SIZE`] nodes and [`MAX_FORMULA_DEPTH`] deep (so printing and evaluation
@@ -80,9 +110,9 @@ pub use claim::Condition;
 pub use display::{Math, MathTable};
 pub use expr::{Expr, Func, Node, MAX_NODES};
 pub use formulas::{
-    bernstein_formulas, bspline_basis_formulas, curve_formulas, hermite_basis_formulas,
-    patch_formulas, surface_formulas, trace, BasisFormulas, CurveFormulas, PatchFormulas,
-    SurfaceFormulas, Traced,
+    bernstein_formulas, bspline_basis_formulas, curve_formulas, curve_formulas_local,
+    hermite_basis_formulas, patch_formulas, surface_formulas, trace, BasisFormulas, CurveFormulas,
+    PatchFormulas, SurfaceFormulas, Traced,
 };
 pub use print::{number, Formula};
 
@@ -205,7 +235,7 @@ impl Trace {
     }
 
     /// The pieces the traced code picked by a value, as it recorded them
-    /// ([`claim::choose`]): the expression read (`t`, `u - 2`) and the interval of its values
+    /// (through one helper that picks and records): the expression read (`t`, `u - 2`) and the interval of its values
     /// on which the choice holds, in order.
     pub fn pieces(&self) -> Vec<(String, Condition)> {
         let claims = ARENA.with(|a| a.borrow().claims.clone());

@@ -44,16 +44,36 @@ struct Witness {
 const CHECK_SLACK: f64 = 8.0;
 
 impl Witness {
+    /// `root` [snapped](Sum::snapped) (rounding residue cleaned: `3/5` for
+    /// `0.6000000000000001`, no `4.9e-17` term), if the snapped form still passes the check;
+    /// else `root` as it is.
+    fn snapped(&self, root: Sum, names: &[String]) -> Sum {
+        // a constant term within the traced computation's own rounding is that rounding
+        let floor = CHECK_SLACK * f64::EPSILON * self.bound;
+        let snapped = root.snapped(if floor.is_finite() { floor } else { 0.0 });
+        if snapped != root && self.check(&snapped, names).is_ok() {
+            snapped
+        } else {
+            root
+        }
+    }
+
     /// That `root` gives the traced value at the trace point ([`Error::FormulaCheck`] if not).
-    /// A traced value that is not finite has no value to vouch for: accepted.
+    /// A traced NaN has no value to vouch for (`x/x` is `1` where the trace divided 0 by 0):
+    /// accepted; a traced infinity must be the formula's value too.
     fn check(&self, root: &Sum, names: &[String]) -> Result<()> {
-        if !self.traced.is_finite() {
+        if self.traced.is_nan() {
             return Ok(());
         }
         let (value, bound) = root.eval_bound(&self.point);
+        if self.traced.is_infinite() && (value == self.traced || value.is_nan()) {
+            return Ok(());
+        }
         let allowed = CHECK_SLACK * f64::EPSILON * (bound + self.bound) + 16.0 * f64::MIN_POSITIVE;
-        // a bound that is not finite (a pole within rounding) cannot refuse anything
-        if (value - self.traced).abs() <= allowed || !allowed.is_finite() {
+        // a bound that is not finite (a pole within rounding) cannot refuse a finite value
+        if self.traced.is_finite()
+            && ((value - self.traced).abs() <= allowed || !allowed.is_finite())
+        {
             return Ok(());
         }
         let mut formula = Printer {
@@ -226,7 +246,7 @@ impl Formula {
             .map(|(root, witness)| {
                 witness.check(&root, names)?;
                 Ok(Formula {
-                    root,
+                    root: witness.snapped(root, names),
                     names: names.to_vec(),
                     witness,
                 })
@@ -273,7 +293,7 @@ impl Formula {
         check(&root)?;
         self.witness.check(&root, &self.names)?;
         Ok(Formula {
-            root,
+            root: self.witness.snapped(root, &self.names),
             names: self.names.clone(),
             witness: self.witness.clone(),
         })
@@ -294,7 +314,7 @@ impl Formula {
             Ok(f) => match f.root.over_common_denominator() {
                 Some(root) if check(&root).is_ok() && f.witness.check(&root, &f.names).is_ok() => {
                     Formula {
-                        root,
+                        root: f.witness.snapped(root, &f.names),
                         names: f.names,
                         witness: f.witness,
                     }
@@ -399,7 +419,18 @@ pub fn number(c: f64) -> String {
     match fraction(c) {
         Some((p, 1)) => p.to_string(),
         Some((p, q)) => format!("{p}/{q}"),
-        None => format!("{c}"),
+        None => decimal(c),
+    }
+}
+
+/// The shortest decimal that reads back to `c`: positional between `10⁻⁴` and `10¹⁶`, else
+/// with an exponent (`5.551115123125783e-17`, not seventeen zeros).
+fn decimal(c: f64) -> String {
+    let m = c.abs();
+    if c.is_finite() && m != 0.0 && !(1e-4..1e16).contains(&m) {
+        format!("{c:e}")
+    } else {
+        format!("{c}")
     }
 }
 
@@ -491,7 +522,7 @@ impl Printer<'_> {
                 format!("<mi>{}</mi>", number(c).replace("inf", "\u{221e}"))
             }
             (_, None) => {
-                let text = format!("{}", c.abs());
+                let text = decimal(c.abs());
                 let body = match text.split_once('e') {
                     Some((m, e)) => {
                         let (m, e) = (self.digits(m, false), self.digits(e, false));
@@ -606,31 +637,45 @@ impl Printer<'_> {
             }
             None => num.push(self.num(c)),
         }
+        // a sum alone above or below a fraction bar needs no brackets in LaTeX and MathML
+        let (mut num_bare, mut den_bare) = (None, None);
         for (a, e) in self.canonical(&t.factors) {
+            let bare = match (a.as_ref(), e.abs()) {
+                (Atom::Group(s), 1.0) => Some(self.sum(s)),
+                _ => None,
+            };
             if *e > 0.0 {
                 num.push(self.factor(a, *e));
+                num_bare = bare;
             } else {
                 den.push(self.factor(a, -e));
+                den_bare = bare;
             }
         }
         let body = match (num.is_empty(), den.is_empty()) {
             (true, true) => self.num(1.0),
             (_, true) => self.times(&num),
             _ => {
-                let top = if num.is_empty() {
-                    self.num(1.0)
-                } else {
-                    self.times(&num)
+                let stacked = self.style != Style::Plain;
+                let top = match (num.len(), num_bare) {
+                    (0, _) => self.num(1.0),
+                    (1, Some(bare)) if stacked => bare,
+                    _ => self.times(&num),
                 };
-                self.frac(&top, &self.times(&den), den.len())
+                let bottom = match (den.len(), den_bare) {
+                    (1, Some(bare)) if stacked => bare,
+                    _ => self.times(&den),
+                };
+                self.frac(&top, &bottom, den.len())
             }
         };
         format!("{sign}{body}")
     }
 
     /// A product's factors in the one print order: variables (in the trace's order), then
-    /// functions, powers, groups (`sin(s)*(2 + cos(t))`), `atan2`, opaque nodes; within a kind, by the variables they
-    /// depend on (`cos(s)` before `sin(t)`), a function's name, then the printed text. So
+    /// functions, powers, groups (`sin(s)*(2 + cos(t))`), `atan2`, opaque nodes; within a
+    /// kind, by the variables they depend on (`cos(s)` before `sin(t)`), a function's name,
+    /// then the printed text. So
     /// `x·y` and `y·x` print alike wherever they occur.
     fn canonical<'f>(&self, factors: &'f [(Rc<Atom>, f64)]) -> Vec<&'f (Rc<Atom>, f64)> {
         let mut order: Vec<&(Rc<Atom>, f64)> = factors.iter().collect();
