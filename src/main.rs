@@ -53,6 +53,12 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+    /// Print the formula corpus (surfaces, curves, bases, a patch: their traced formulas,
+    /// which is the derivative of which, and reference values), one JSON object per line,
+    /// for `scripts/check_formulas.py`.
+    ///
+    /// Example: `splinelab formulas > corpus.jsonl`
+    Formulas,
 }
 
 fn main() -> ExitCode {
@@ -108,6 +114,12 @@ fn sweep_all(ids: &[String], budget: Duration, out: &std::path::Path) -> anyhow:
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
+    if let Some(Command::Formulas) = cli.command {
+        for entry in splinelab::report::formula_corpus::corpus()? {
+            say(entry.to_json())?;
+        }
+        return Ok(());
+    }
     if let Some(Command::Bench {
         only,
         millis,

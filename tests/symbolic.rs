@@ -793,7 +793,12 @@ fn the_angular_spline_beyond_its_end_claims_no_piece() {
     assert!(f.d1.iter().all(|d| d.as_constant() == Some(0.0)));
     // inside, the piece the evaluation picked
     let g = curve_formulas(&angular, 0.25).unwrap();
-    assert_eq!(g.branches[0], "t ∈ [0, 1)");
+    let span = g.span.expect("a recorded piece");
+    assert!(
+        span.lo == 0.0 && span.hi <= 1.0 && span.contains(0.25),
+        "{:?}",
+        g.branches
+    );
 }
 
 /// A user's curve that branches on the value of `t` and names no piece.
@@ -1022,4 +1027,33 @@ fn latex_brackets_only_where_precedence_needs_them() {
         "\\frac{t}{\\left(1 + t\\right)^{2}}"
     );
     assert_eq!(out.formulas[0].plain(), "(1 + t)/(2 + t^2)");
+}
+
+#[test]
+fn an_inflection_piece_claims_the_half_its_arc_holds_on() {
+    use nalgebra::Vector2;
+    let points: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (4.0, 0.0), (5.0, 1.0)]
+        .iter()
+        .map(|&(x, y)| Vector2::new(x, y))
+        .collect();
+    let angular = splinelab::AngularSpline::try_new(points).unwrap();
+    let f = curve_formulas(&angular, 1.7).unwrap();
+    let span = f.span.expect("a recorded piece");
+    assert_eq!(
+        (span.lo, span.hi, span.closed),
+        (1.5, 2.0, true),
+        "{:?}",
+        f.branches
+    );
+    assert_eq!(f.branches[0], "t ∈ [3/2, 2]");
+    // and the formula holds on all of it
+    for t in [1.5, 1.6, 1.8, 2.0] {
+        let p = angular.point(t);
+        for k in 0..2 {
+            assert!((f.point[k].eval(&[t]) - p[k]).abs() <= 1e-12, "{t}");
+        }
+    }
+    // a root of a reciprocal is the reciprocal of the root (one sign: defined alike)
+    let r = trace([("x", 2.0)], |[x]| vec![(x.recip()).sqrt()]).unwrap();
+    assert_eq!(r.formulas[0].plain(), "1/sqrt(x)");
 }

@@ -19,6 +19,7 @@ pub mod draw;
 pub mod error;
 pub mod figure;
 mod files;
+pub mod formula_corpus;
 pub mod heatmap;
 pub mod notebook;
 pub mod plot2d;

@@ -10,7 +10,8 @@
 //! - a sum that is a factor of a product is kept whole, its sign out if all its terms are
 //!   negative (`(−a − b)·c = −(a + b)·c`); `(x·y)ⁿ = xⁿ·yⁿ` and `(xᵃ)ⁿ = xᵃⁿ` for integer `n`,
 //!   `(c·x·y)ᵖ = cᵖ·xᵖ·yᵖ` for `c > 0`, any `p` and bases that are `≥ 0` by their structure
-//!   ([`Atom::nonnegative`]: `exp`, `cosh`, `|·|`, …); a power `p` of anything else stays
+//!   ([`Atom::nonnegative`]: `exp`, `cosh`, `|·|`, …), and `(c·xᵃ)ᵖ = cᵖ·xᵃᵖ` for one base
+//!   with an odd integer `a` (`√(1/x) = x^(−1/2)`); a power `p` of anything else stays
 //!   whole (`√(s·t)` is not `√s·√t`, `√(x²)` is not `x`).
 //! - Equality is structural and ignores order: terms and factors compare as multisets
 //!   (`sin(x + y) − sin(y + x) = 0`).
@@ -597,13 +598,17 @@ impl Sum {
             return Sum::num(c.powf(p));
         }
         if let [t] = a.terms.as_slice() {
-            // (c·x·y)ᵖ = cᵖ·xᵖ·yᵖ for c > 0 and first powers of bases that are ≥ 0 wherever
-            // defined: for a base that can be negative the right side is undefined where the
-            // left is not (√(s·t) at s = t = −1 is 1, √s·√t is not real)
-            if t.coef > 0.0 && t.factors.iter().all(|(a, e)| *e == 1.0 && a.nonnegative()) {
+            // (c·x·y)ᵖ = cᵖ·xᵖ·yᵖ for c > 0 and bases that are ≥ 0 wherever defined: for a
+            // base that can be negative the right side is undefined where the
+            // left is not (√(s·t) at s = t = −1 is 1, √s·√t is not real); and (c·xᵃ)ᵖ =
+            // cᵖ·xᵃᵖ for one base with an odd integer exponent (xᵃ and x have one sign, so
+            // both sides are undefined for x < 0: √(1/x) = x^(−1/2))
+            let odd = |e: f64| e.fract() == 0.0 && e % 2.0 != 0.0;
+            let single_odd = matches!(t.factors.as_slice(), [(_, e)] if odd(*e));
+            if t.coef > 0.0 && (single_odd || t.factors.iter().all(|(a, _)| a.nonnegative())) {
                 return Sum::from_term(Term {
                     coef: t.coef.powf(p),
-                    factors: t.factors.iter().map(|(b, _)| (b.clone(), p)).collect(),
+                    factors: t.factors.iter().map(|(b, e)| (b.clone(), e * p)).collect(),
                 });
             }
         }

@@ -89,6 +89,50 @@ impl Condition {
         }
     }
 
+    /// The condition on `x` where `a·x + b` satisfies this one (`a ≠ 0`).
+    pub fn pulled_back(&self, a: f64, b: f64) -> Condition {
+        let (lo, hi) = ((self.lo - b) / a, (self.hi - b) / a);
+        if a > 0.0 {
+            Condition {
+                lo,
+                lo_closed: self.lo_closed,
+                hi,
+                hi_closed: self.hi_closed,
+            }
+        } else {
+            Condition {
+                lo: hi,
+                lo_closed: self.hi_closed,
+                hi: lo,
+                hi_closed: self.lo_closed,
+            }
+        }
+    }
+
+    /// Both conditions at once.
+    pub fn intersect(&self, other: &Condition) -> Condition {
+        let (lo, lo_closed) = if self.lo > other.lo {
+            (self.lo, self.lo_closed)
+        } else if other.lo > self.lo {
+            (other.lo, other.lo_closed)
+        } else {
+            (self.lo, self.lo_closed && other.lo_closed)
+        };
+        let (hi, hi_closed) = if self.hi < other.hi {
+            (self.hi, self.hi_closed)
+        } else if other.hi < self.hi {
+            (other.hi, other.hi_closed)
+        } else {
+            (self.hi, self.hi_closed && other.hi_closed)
+        };
+        Condition {
+            lo,
+            lo_closed,
+            hi,
+            hi_closed,
+        }
+    }
+
     /// As a [`Span`] (`[lo, hi)` or `[lo, hi]`), if it is a finite interval closed on the left.
     pub fn as_span(&self) -> Option<Span> {
         (self.lo.is_finite() && self.hi.is_finite() && self.lo_closed).then_some(Span {

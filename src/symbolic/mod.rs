@@ -49,7 +49,8 @@
 //! - equal bases merged by their exponents (`x²·x⁻¹ = x`, `√(1+x²)·√(1+x²) = 1 + x²`);
 //! - `(x·y)ⁿ = xⁿ·yⁿ` and `(xᵃ)ⁿ = xᵃⁿ` for integer `n`; `(c·x·y)ᵖ = cᵖ·xᵖ·yᵖ` for real `p`
 //!   only when `c > 0` and every base is `≥ 0` by its structure (`exp`, `cosh`, `|·|`, `acos`,
-//!   sums of such): `√(s·t)` stays whole (at `s = t = −1` it is 1, `√s·√t` is not real), and
+//!   sums of such), or for one base with an odd integer power (`√(1/x) = x^(−1/2)`: `xᵃ` and
+//!   `x` have one sign): `√(s·t)` stays whole (at `s = t = −1` it is 1, `√s·√t` is not real), and
 //!   `√(x²)` stays (it is `|x|`);
 //! - the Pythagorean identities on squares with equal rests and matching coefficients:
 //!   `c·R·sin²u + c·R·cos²u = c·R`, `c·R·cosh²u − c·R·sinh²u = c·R` (so `d/dt tanh t` is
@@ -237,13 +238,27 @@ impl Trace {
     /// The pieces the traced code picked by a value, as it recorded them
     /// (through one helper that picks and records): the expression read (`t`, `u - 2`) and the interval of its values
     /// on which the choice holds, in order.
+    ///
+    /// A condition on an affine function of one variable (`u - 1 ≥ 1/2`, the second arc of
+    /// an Angular inflection piece) is a condition on that variable, and the conditions on
+    /// one variable are intersected into one (`u ∈ [3/2, 2)`).
     pub fn pieces(&self) -> Vec<(String, Condition)> {
         let claims = ARENA.with(|a| a.borrow().claims.clone());
+        let names = current_names();
         let mut out: Vec<(String, Condition)> = Vec::new();
         for (id, c) in claims {
-            let entry = (self.describe_node(id), c);
-            if !out.contains(&entry) {
-                out.push(entry);
+            let e = Expr::from_id(id, f64::NAN, self.generation);
+            let formula = Formula::capture(&e, &names, &current_point());
+            let (what, c) = match formula.as_ref().ok().and_then(Formula::affine) {
+                Some((i, a, b)) => (
+                    names.get(i as usize).cloned().unwrap_or_default(),
+                    c.pulled_back(a, b),
+                ),
+                None => (self.describe_node(id), c),
+            };
+            match out.iter_mut().find(|(w, _)| *w == what) {
+                Some((_, known)) => *known = known.intersect(&c),
+                None => out.push((what, c)),
             }
         }
         out

@@ -264,6 +264,27 @@ impl Formula {
         false
     }
 
+    /// `(i, a, b)` when the formula is `a·xᵢ + b` with `a ≠ 0` (an affine function of one
+    /// variable): a condition on it is a condition on `xᵢ`.
+    pub(crate) fn affine(&self) -> Option<(u32, f64, f64)> {
+        let (mut var, mut a, mut b) = (None, 0.0, 0.0);
+        for t in &self.root.terms {
+            match t.factors.as_slice() {
+                [] => b += t.coef,
+                [(atom, e)] if *e == 1.0 => match atom.as_ref() {
+                    Atom::Var(i) if var.is_none() => {
+                        var = Some(*i);
+                        a = t.coef;
+                    }
+                    _ => return None,
+                },
+                _ => return None,
+            }
+        }
+        var.filter(|_| a != 0.0 && a.is_finite() && b.is_finite())
+            .map(|i| (i, a, b))
+    }
+
     /// The names of the variables, in the order [`Formula::eval`] takes their values.
     pub fn names(&self) -> &[String] {
         &self.names
