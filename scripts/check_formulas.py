@@ -23,29 +23,13 @@ scripts/bench_symbolic.py does.
 usage: python3 scripts/check_formulas.py [--corpus FILE] [--seconds N]
 """
 import json
-import os
 import pathlib
 import subprocess
 import sys
 
-SYMPY_VERSION = "1.14.0"
+from sympy_venv import venv_python
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-
-
-def venv_python():
-    state = pathlib.Path(os.environ.get("SPLINELAB_STATE", pathlib.Path.home() / ".cache/splinelab"))
-    venv = state / "venv"
-    python = venv / "bin" / "python"
-    if not python.exists():
-        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-    probe = subprocess.run([str(python), "-c", "import sympy"], capture_output=True)
-    if probe.returncode != 0:
-        subprocess.run(
-            [str(python), "-m", "pip", "install", "--quiet", "--disable-pip-version-check",
-             f"sympy=={SYMPY_VERSION}"],
-            check=True,
-        )
-    return python
 
 
 CHECKER = r'''

@@ -289,33 +289,33 @@ impl Term {
     /// The term's value and rounding bound (units of `ε`): the factors' errors carried by
     /// their partial derivatives, plus one rounding per multiplication and the coefficient's.
     fn eval_bound(&self, values: &[f64]) -> (f64, f64) {
-        let parts: Vec<(f64, f64)> = self
-            .factors
-            .iter()
-            .map(|(a, e)| {
-                let (x, ex) = a.eval_bound(values);
-                let v = power(x, *e);
-                let d = if ex == 0.0 {
-                    0.0
-                } else {
-                    (e * power(x, e - 1.0)).abs() * ex
-                };
-                (v, d + 2.0 * v.abs())
-            })
-            .collect();
-        let value = parts.iter().fold(self.coef, |p, (v, _)| p * v);
-        // Σⱼ dⱼ Πₖ≠ⱼ |vₖ|, with prefix and suffix products (zeros handled)
-        let n = parts.len();
-        let mut suffix = vec![1.0; n + 1];
-        for j in (0..n).rev() {
-            suffix[j] = suffix[j + 1] * parts[j].0.abs();
+        // Σⱼ dⱼ Πₖ≠ⱼ |vₖ| in one pass: the product of the non-zero |vₖ|, and the carried sum
+        // Σ dⱼ / |vⱼ| over the non-zero factors (or the one zero factor's dⱼ)
+        let (mut value, mut product, mut ratio) = (self.coef, 1.0f64, 0.0f64);
+        let (mut zeros, mut zero_d) = (0usize, 0.0f64);
+        for (a, e) in &self.factors {
+            let (x, ex) = a.eval_bound(values);
+            let v = power(x, *e);
+            let d = if ex == 0.0 {
+                0.0
+            } else {
+                (e * power(x, e - 1.0)).abs() * ex
+            } + 2.0 * v.abs();
+            value *= v;
+            if v == 0.0 {
+                zeros += 1;
+                zero_d = d;
+            } else {
+                product *= v.abs();
+                ratio += d / v.abs();
+            }
         }
-        let mut prefix = 1.0;
-        let mut carried = 0.0;
-        for (j, (v, d)) in parts.iter().enumerate() {
-            carried += d * prefix * suffix[j + 1];
-            prefix *= v.abs();
-        }
+        let carried = match zeros {
+            0 => product * ratio,
+            1 => zero_d * product,
+            _ => 0.0,
+        };
+        let n = self.factors.len();
         let bound = self.coef.abs() * carried + (n as f64 + 2.0) * value.abs();
         (value, bound)
     }
@@ -515,6 +515,21 @@ impl Sum {
     /// and groups too — and a sum that is only a constant of at most `floor` (the rounding of
     /// the traced computation that cancelled to it) made `0`. Whether the result still gives the traced value is for the capture
     /// check to say ([`crate::symbolic::Formula`] keeps the unrounded form if not).
+    /// Whether [`Sum::snapped`] would change anything (a read-only scan: most formulas have
+    /// nothing to clean, and rebuilding them costs more than looking).
+    pub(crate) fn needs_snap(&self, floor: f64) -> bool {
+        if self.terms.iter().any(|t| !t.coef.is_finite()) {
+            return false;
+        }
+        let largest = self.terms.iter().map(|t| t.coef.abs()).fold(0.0, f64::max);
+        self.terms.iter().any(|t| {
+            snap(t.coef) != t.coef
+                || (self.terms.len() > 1 && t.coef.abs() <= RESIDUE * largest)
+                || (self.terms.len() == 1 && t.factors.is_empty() && t.coef.abs() <= floor)
+                || t.factors.iter().any(|(a, _)| a.needs_snap())
+        })
+    }
+
     pub(crate) fn snapped(&self, floor: f64) -> Sum {
         if self.terms.iter().any(|t| !t.coef.is_finite()) {
             return self.clone();
@@ -881,6 +896,15 @@ fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
 }
 
 impl Atom {
+    /// Whether any of its sums [needs snapping](Sum::needs_snap).
+    fn needs_snap(&self) -> bool {
+        match self {
+            Atom::Var(_) => false,
+            Atom::Func(_, a) | Atom::Group(a) | Atom::Opaque(_, a, _) => a.needs_snap(0.0),
+            Atom::Pow(a, b) | Atom::Atan2(a, b) => a.needs_snap(0.0) || b.needs_snap(0.0),
+        }
+    }
+
     /// The atom with its sums [snapped](Sum::snapped).
     fn snapped(&self) -> Atom {
         match self {

@@ -50,7 +50,11 @@ impl Witness {
     fn snapped(&self, root: Sum, names: &[String]) -> Sum {
         // a constant term within the traced computation's own rounding is that rounding
         let floor = CHECK_SLACK * f64::EPSILON * self.bound;
-        let snapped = root.snapped(if floor.is_finite() { floor } else { 0.0 });
+        let floor = if floor.is_finite() { floor } else { 0.0 };
+        if !root.needs_snap(floor) {
+            return root;
+        }
+        let snapped = root.snapped(floor);
         if snapped != root && self.check(&snapped, names).is_ok() {
             snapped
         } else {
