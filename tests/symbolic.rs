@@ -1057,3 +1057,39 @@ fn an_inflection_piece_claims_the_half_its_arc_holds_on() {
     let r = trace([("x", 2.0)], |[x]| vec![(x.recip()).sqrt()]).unwrap();
     assert_eq!(r.formulas[0].plain(), "1/sqrt(x)");
 }
+
+#[test]
+fn fractions_over_one_denominator_where_that_is_shorter() {
+    let out = trace([("s", 0.6), ("t", 0.7)], |[s, t]| {
+        vec![s.sinh() / s.cosh() + t]
+    })
+    .unwrap();
+    assert_eq!(out.formulas[0].plain(), "tanh(s) + t");
+    // the mixed partials of tanh(s − t) and asin(st/2): one fraction each, as short as
+    // sympy's simplified forms
+    let tanh = surface_formulas(&TanhSurface, 0.6, 0.7).unwrap();
+    assert_eq!(tanh.point[2].plain(), "tanh(s - t)");
+    assert_eq!(tanh.dst[2].plain(), "tanh(s - t)*(2 - 2*tanh(s - t)^2)");
+    let asin = surface_formulas(&AsinSurface, 0.6, 0.7).unwrap();
+    assert_eq!(asin.dst[2].plain(), "1/(2*(1 - s^2*t^2/4)^(3/2))");
+    for (s, t) in [(0.6, 0.7), (-0.3, 0.9)] {
+        let want = TanhSurface.partials(s, t).dst.z;
+        assert!(close(tanh.dst[2].eval(&[s, t]), want));
+        let want = AsinSurface.partials(s, t).dst.z;
+        assert!(close(asin.dst[2].eval(&[s, t]), want));
+    }
+}
+
+struct TanhSurface;
+impl ParametricSurface for TanhSurface {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        Vector3::new(s, t, (s - t).tanh())
+    }
+}
+
+struct AsinSurface;
+impl ParametricSurface for AsinSurface {
+    fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        Vector3::new(s, t, (s * t * 0.5).asin())
+    }
+}

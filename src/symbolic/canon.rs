@@ -511,10 +511,122 @@ impl Sum {
 
     /// This sum with every coefficient within a few units in the last place of a simple
     /// fraction (denominator ≤ 64) set to it, every term whose coefficient is rounding
-    /// residue beside the others' (below `16 ε` of the largest) dropped — inside functions
+    /// residue beside the others' (below `64 ε` of the largest) dropped — inside functions
     /// and groups too — and a sum that is only a constant of at most `floor` (the rounding of
     /// the traced computation that cancelled to it) made `0`. Whether the result still gives the traced value is for the capture
     /// check to say ([`crate::symbolic::Formula`] keeps the unrounded form if not).
+    /// This sum with, from the inside out, every sum whose terms have denominators that are
+    /// powers of one atom `D` written over `D` — where that makes it smaller: the numerator
+    /// is collected (like terms, the Pythagorean identities) and, for a sum `D`, multiplied
+    /// out, so `2 − 2·sinh²/cosh² = 2/cosh²` and `1/2 + x/(8·(1 − x/4)) = 1/(2·(1 − x/4))`.
+    /// Equal as functions wherever the original is defined (the capture check confirms it
+    /// at the trace point).
+    pub(crate) fn combined(&self) -> Sum {
+        if !self.has_denominator() {
+            return self.clone();
+        }
+        // the terms rebuilt as products of their combined factors (a group that became one
+        // term is multiplied in)
+        let mut inner = Sum::num(0.0);
+        for t in &self.terms {
+            let t = quotients(t);
+            let mut product = Sum::num(t.coef);
+            for (a, e) in &t.factors {
+                let factor = match a.combined() {
+                    Atom::Group(g) => Sum::powf(&g, *e),
+                    other => Sum::from_term(Term {
+                        coef: 1.0,
+                        factors: vec![(Rc::new(other), *e)],
+                    }),
+                };
+                product = Sum::mul(&product, &factor);
+            }
+            inner = Sum::add(&inner, &product);
+        }
+        if inner.terms.len() < 2 || inner.size > 4096 {
+            return inner;
+        }
+        let mut best = inner.clone();
+        let mut dens: Vec<Rc<Atom>> = Vec::new();
+        for t in &inner.terms {
+            for (a, e) in &t.factors {
+                if *e < 0.0 && !dens.iter().any(|d| same_atom(d, a)) {
+                    dens.push(a.clone());
+                }
+            }
+        }
+        for d in dens.iter().take(4) {
+            let k = inner
+                .terms
+                .iter()
+                .flat_map(|t| t.factors.iter())
+                .filter(|(a, _)| same_atom(a, d))
+                .map(|(_, e)| -e)
+                .fold(0.0, f64::max);
+            // every term's power of D lifted by k must be a whole power (√D·D^(−3/2) = 1/D, but
+            // a term without D cannot take a half power)
+            let power_of = |t: &Term| {
+                t.factors
+                    .iter()
+                    .find(|(a, _)| same_atom(a, d))
+                    .map_or(0.0, |(_, e)| *e)
+            };
+            let whole = inner.terms.iter().all(|t| {
+                let lifted = power_of(t) + k;
+                lifted >= 0.0 && lifted.fract() == 0.0
+            });
+            if k <= 0.0 || k > 16.0 || !whole {
+                continue;
+            }
+            let lift = Term {
+                coef: 1.0,
+                factors: vec![(d.clone(), k)],
+            };
+            let lifted = inner.terms.iter().map(|t| Sum::from_term(t.times(&lift)));
+            let mut numerator = Sum::num(0.0);
+            for part in lifted {
+                numerator = Sum::add(&numerator, &part);
+            }
+            // multiplied out, so that terms can cancel and identities meet
+            match numerator.expanded() {
+                Some(n) if n.size <= 4 * inner.size => numerator = n,
+                _ => {
+                    if matches!(d.as_ref(), Atom::Group(_)) {
+                        continue;
+                    }
+                }
+            }
+            let over = Term {
+                coef: 1.0,
+                factors: vec![(d.clone(), -k)],
+            };
+            let candidate = Sum::mul(&numerator, &Sum::from_term(over));
+            if candidate.size < best.size {
+                best = candidate;
+            }
+        }
+        best
+    }
+
+    /// Whether a factor anywhere in it has a negative power (only then can
+    /// [`Sum::combined`] change it).
+    fn has_denominator(&self) -> bool {
+        self.terms.iter().any(|t| {
+            t.factors.iter().any(|(a, e)| {
+                *e < 0.0
+                    || match a.as_ref() {
+                        Atom::Var(_) => false,
+                        Atom::Func(_, x) | Atom::Group(x) | Atom::Opaque(_, x, _) => {
+                            x.has_denominator()
+                        }
+                        Atom::Pow(x, y) | Atom::Atan2(x, y) => {
+                            x.has_denominator() || y.has_denominator()
+                        }
+                    }
+            })
+        })
+    }
+
     /// Whether [`Sum::snapped`] would change anything (a read-only scan: most formulas have
     /// nothing to clean, and rebuilding them costs more than looking).
     pub(crate) fn needs_snap(&self, floor: f64) -> bool {
@@ -792,8 +904,40 @@ impl Sum {
     }
 }
 
+/// `t` with `sinᵉu·cos⁻ᵉu` written `tanᵉu` and `sinhᵉu·cosh⁻ᵉu` written `tanhᵉu` (equal
+/// wherever the left side is defined).
+fn quotients(t: &Term) -> Term {
+    let mut out = t.clone();
+    for (num, den, quotient) in [
+        (Func::Sin, Func::Cos, Func::Tan),
+        (Func::Sinh, Func::Cosh, Func::Tanh),
+    ] {
+        let find = |factors: &[(Rc<Atom>, f64)], f: Func| {
+            factors
+                .iter()
+                .position(|(a, _)| matches!(a.as_ref(), Atom::Func(g, _) if *g == f))
+        };
+        let (Some(i), Some(j)) = (find(&out.factors, num), find(&out.factors, den)) else {
+            continue;
+        };
+        let (Atom::Func(_, u), Atom::Func(_, v)) =
+            (out.factors[i].0.as_ref(), out.factors[j].0.as_ref())
+        else {
+            continue;
+        };
+        let (e, f) = (out.factors[i].1, out.factors[j].1);
+        if u != v || e <= 0.0 || f != -e {
+            continue;
+        }
+        let tan = Rc::new(Atom::Func(quotient, u.clone()));
+        out.factors[i] = (tan, e);
+        out.factors.remove(j);
+    }
+    out
+}
+
 /// A coefficient below this fraction of the largest in its sum is rounding residue.
-const RESIDUE: f64 = 16.0 * f64::EPSILON;
+const RESIDUE: f64 = 64.0 * f64::EPSILON;
 
 /// The most units in the last place a coefficient may be from a simple fraction to be set to
 /// it.
@@ -831,11 +975,13 @@ fn partner(f: Func) -> Option<(Func, f64)> {
 }
 
 /// The terms with one Pythagorean pair merged (`c·R·sin²u + c·R·cos²u = c·R`,
-/// `c·R·cosh²u − c·R·sinh²u = c·R`), or `None` if there is none. Only squares, only equal
-/// rests `R` and matching coefficients: an identity, never an approximation.
+/// `c·R·cosh²u − c·R·sinh²u = c·R`, the squares taken out of higher powers too:
+/// `2 sinh u cosh²u − 2 sinh³u = 2 sinh u`), or `None` if there is none. Only equal rests `R`
+/// and matching coefficients: an identity, never an approximation.
 fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
+    // a factor sin(u)ᵉ with an integer e ≥ 2 holds the square sin²u (the rest keeps sinᵉ⁻²u)
     let square = |t: &Term, k: usize| match &t.factors[k] {
-        (a, e) if *e == 2.0 => match a.as_ref() {
+        (a, e) if *e >= 2.0 && e.fract() == 0.0 => match a.as_ref() {
             Atom::Func(f, u) => partner(*f).map(|p| (*f, p, u.clone())),
             _ => None,
         },
@@ -843,7 +989,11 @@ fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
     };
     let rest = |t: &Term, k: usize| {
         let mut r = t.clone();
-        r.factors.remove(k);
+        if r.factors[k].1 == 2.0 {
+            r.factors.remove(k);
+        } else {
+            r.factors[k].1 -= 2.0;
+        }
         r
     };
     let candidates: Vec<(usize, usize)> = terms
@@ -896,6 +1046,18 @@ fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
 }
 
 impl Atom {
+    /// The atom with its sums [combined](Sum::combined).
+    fn combined(&self) -> Atom {
+        match self {
+            Atom::Var(i) => Atom::Var(*i),
+            Atom::Func(f, a) => Atom::Func(*f, a.combined()),
+            Atom::Group(a) => Atom::Group(a.combined()),
+            Atom::Pow(a, b) => Atom::Pow(a.combined(), b.combined()),
+            Atom::Atan2(a, b) => Atom::Atan2(a.combined(), b.combined()),
+            Atom::Opaque(w, a, v) => Atom::Opaque(w, a.combined(), *v),
+        }
+    }
+
     /// Whether any of its sums [needs snapping](Sum::needs_snap).
     fn needs_snap(&self) -> bool {
         match self {

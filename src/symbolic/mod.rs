@@ -56,9 +56,13 @@
 //!   `c·R·sin²u + c·R·cos²u = c·R`, `c·R·cosh²u − c·R·sinh²u = c·R` (so `d/dt tanh t` is
 //!   `1/cosh(t)^2`);
 //! - a sum that is a factor keeps its sign outside (`(−a − b)·c = −(a + b)·c`);
+//! - on capture, a sum whose terms' denominators are powers of one atom is written over it
+//!   when that is shorter, the numerator multiplied out so that terms cancel and the
+//!   identities meet (`2 − 2 sinh²/cosh² = 2/cosh²`, `d²/ds dt asin(st/2)` as
+//!   `1/(2*(1 - s^2*t^2/4)^(3/2))`), and `sinᵉu/cosᵉu`, `sinhᵉu/coshᵉu` are `tanᵉu`, `tanhᵉu`;
 //! - rounding residue cleaned where the capture check allows it: a coefficient within 32 ulps
 //!   of a fraction with denominator ≤ 64 becomes it (`3/5`, not `0.6000000000000001`), a
-//!   coefficient below 16 ε of the largest in its sum is dropped, and a formula that is only
+//!   coefficient below 64 ε of the largest in its sum is dropped, and a formula that is only
 //!   a constant within the traced computation's own rounding is `0`.
 //!
 //! Polynomial and rational pieces (splines, bases, a patch) are multiplied out in powers of
@@ -68,7 +72,7 @@
 //! [`curve_formulas`] prints a piece in the global `t`; [`curve_formulas_local`] in the
 //! piece's local variable `u = t − tᵢ`, which keeps the digits a power form in `t` loses far
 //! from 0. *Not done:* other function identities (`sin 2x = 2 sin x cos x`), common
-//! denominators of different polynomials, cancelling common factors of a numerator and
+//! denominators of different atoms, cancelling common factors of a numerator and
 //! denominator other than equal bases, factoring polynomials.
 //!
 //! **Printing.** Plain text with ASCII operators ([`Formula::plain`]: `-sin(s)*(2 + cos(t))`,

@@ -249,6 +249,13 @@ impl Formula {
             .into_iter()
             .map(|(root, witness)| {
                 witness.check(&root, names)?;
+                // fractions over one denominator where that is shorter, if still checked
+                let combined = root.combined();
+                let root = if combined != root && witness.check(&combined, names).is_ok() {
+                    combined
+                } else {
+                    root
+                };
                 Ok(Formula {
                     root: witness.snapped(root, names),
                     names: names.to_vec(),
