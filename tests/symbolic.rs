@@ -777,14 +777,18 @@ fn sums_and_products_are_equal_in_any_order() {
     assert_eq!(a.formulas[0].plain(), "-cos(s)*sin(t)");
 }
 
+/// The open Angular spline through `points` (the first and last are guides).
+fn angular_through(points: &[(f64, f64)]) -> splinelab::AngularSpline {
+    let points = points
+        .iter()
+        .map(|&(x, y)| nalgebra::Vector2::new(x, y))
+        .collect();
+    splinelab::AngularSpline::try_new(points).unwrap()
+}
+
 #[test]
 fn the_angular_spline_beyond_its_end_claims_no_piece() {
-    use nalgebra::Vector2;
-    let points: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 1.0), (2.0, 0.5), (3.0, 2.0), (4.0, 1.0)]
-        .iter()
-        .map(|&(x, y)| Vector2::new(x, y))
-        .collect();
-    let angular = splinelab::AngularSpline::try_new(points).unwrap();
+    let angular = angular_through(&[(0.0, 0.0), (1.0, 1.0), (2.0, 0.5), (3.0, 2.0), (4.0, 1.0)]);
     let (_, b) = angular.domain();
     let f = curve_formulas(&angular, b + 1.0).unwrap();
     // the constant end point is not "the last piece"
@@ -1031,12 +1035,7 @@ fn latex_brackets_only_where_precedence_needs_them() {
 
 #[test]
 fn an_inflection_piece_claims_the_half_its_arc_holds_on() {
-    use nalgebra::Vector2;
-    let points: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (4.0, 0.0), (5.0, 1.0)]
-        .iter()
-        .map(|&(x, y)| Vector2::new(x, y))
-        .collect();
-    let angular = splinelab::AngularSpline::try_new(points).unwrap();
+    let angular = angular_through(&[(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (4.0, 0.0), (5.0, 1.0)]);
     let f = curve_formulas(&angular, 1.7).unwrap();
     let span = f.span.expect("a recorded piece");
     assert_eq!(

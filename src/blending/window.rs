@@ -108,7 +108,7 @@ impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
 
     /// `[k, k + 1)`, segment `k = ⌊s⌋`.
     fn span_at(&self, s: f64) -> Option<crate::domain::Span> {
-        Some(crate::interp::angular::unit_span(s, self.segments))
+        Some(crate::symbolic::claim::unit_span(s, self.segments))
     }
 }
 

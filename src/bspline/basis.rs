@@ -140,17 +140,7 @@ impl BSplineBasis {
     /// The values on which span `span`, picked for the value `x`, holds: its interval, the
     /// end spans extended beyond the domain where `x` lies beyond it (they extrapolate).
     fn span_condition(&self, span: usize, x: f64) -> crate::symbolic::Condition {
-        let (a, b) = self.domain();
-        let mut c = crate::symbolic::Condition::from(self.span_interval(span));
-        if x < a {
-            c.lo = f64::NEG_INFINITY;
-            c.lo_closed = false;
-        }
-        if x > b {
-            c.hi = f64::INFINITY;
-            c.hi_closed = false;
-        }
-        c
+        crate::symbolic::claim::beyond(self.span_interval(span), x, self.domain())
     }
 
     /// The knot span `[t_ℓ, t_ℓ₊₁)` of `t` ([`BSplineBasis::find_span`]: the right end of the

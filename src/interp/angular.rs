@@ -792,7 +792,7 @@ impl ParametricCurve<2> for AngularSpline {
     /// belongs to the last piece. Outside the domain the curve stays at its end points (an
     /// Angular piece does not extrapolate: its formula is only valid for `s ∈ [0, 1]`).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> Vector2<D> {
-        use crate::symbolic::claim::{choose, unit_index, Condition};
+        use crate::symbolic::claim::{choose, unit_span, Condition};
         let (a, b) = self.domain();
         let n = self.pieces();
         // beyond the ends the curve is a constant point; inside, piece j = ⌊u⌋ (the right
@@ -803,13 +803,8 @@ impl ParametricCurve<2> for AngularSpline {
             } else if x > b {
                 ((n - 1, Some(1.0)), Condition::above(b, false))
             } else {
-                let j = unit_index(x, n);
-                let span = crate::domain::Span {
-                    lo: j as f64,
-                    hi: j as f64 + 1.0,
-                    closed: j + 1 >= n,
-                };
-                ((j, None), Condition::from(span))
+                let span = unit_span(x, n);
+                ((span.lo as usize, None), Condition::from(span))
             }
         });
         let s = match s {
@@ -827,7 +822,7 @@ impl ParametricCurve<2> for AngularSpline {
     /// `[j, j + 1)`, piece `j = ⌊u⌋` (the last one closed); the half `[j, j + ½)` or
     /// `[j + ½, j + 1)` of an inflection piece, whose two arcs are two formulas.
     fn span_at(&self, u: f64) -> Option<crate::domain::Span> {
-        let whole = unit_span(u, self.pieces());
+        let whole = crate::symbolic::claim::unit_span(u, self.pieces());
         let j = whole.lo as usize;
         if self.kinds[j] != PieceKind::Inflection {
             return Some(whole);
@@ -842,16 +837,5 @@ impl ParametricCurve<2> for AngularSpline {
         } else {
             crate::domain::Span { lo: mid, ..whole }
         })
-    }
-}
-
-/// Piece `j = ⌊u⌋` of `pieces` unit pieces, `[j, j + 1)`, clamped to the first and last (the
-/// last closed).
-pub(crate) fn unit_span(u: f64, pieces: usize) -> crate::domain::Span {
-    let j = crate::symbolic::claim::unit_index(u, pieces);
-    crate::domain::Span {
-        lo: j as f64,
-        hi: j as f64 + 1.0,
-        closed: j + 1 >= pieces,
     }
 }

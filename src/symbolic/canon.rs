@@ -171,8 +171,7 @@ impl Atom {
             Atom::Var(i) => (values.get(*i as usize).copied().unwrap_or(f64::NAN), 0.0),
             Atom::Func(f, a) => {
                 let (x, e) = a.eval_bound(values);
-                let y = f.apply(x);
-                (y, f.slope(x) * e + 2.0 * y.abs())
+                apply_bound(*f, x, e)
             }
             Atom::Group(a) => a.eval_bound(values),
             Atom::Pow(a, b) => {
@@ -204,6 +203,14 @@ impl Atom {
     pub fn is_var(&self) -> bool {
         matches!(self, Atom::Var(_))
     }
+}
+
+/// `f(x)` and its rounding bound (units of `ε`) from the bound `ex` of `x`: the argument's
+/// error carried by `|f′(x)|`, and the function's own rounding (a library function is
+/// within an ulp or two).
+pub(crate) fn apply_bound(f: Func, x: f64, ex: f64) -> (f64, f64) {
+    let y = f.apply(x);
+    (y, f.slope(x) * ex + 2.0 * y.abs())
 }
 
 /// The rounding bound of `v = xʸ` (in units of `ε`) from the bounds `ex`, `ey` of `x`, `y`.

@@ -243,22 +243,20 @@ pub(crate) fn piece<D: DualStruct<Real = f64>>(nodes: &[f64], t: &D) -> usize {
 /// in the last; outside, the end pieces, and NaN the first), recorded as [`piece`] records it.
 pub(crate) fn unit_piece<D: DualStruct<Real = f64>>(n: usize, t: &D) -> usize {
     choose(t, |x| {
-        let j = unit_index(x, n);
-        let mut c = Condition::from(Span {
-            lo: j as f64,
-            hi: j as f64 + 1.0,
-            closed: j + 1 >= n,
-        });
-        if j == 0 && x < 0.0 {
-            c.lo = f64::NEG_INFINITY;
-            c.lo_closed = false;
-        }
-        if j + 1 >= n && x > n as f64 {
-            c.hi = f64::INFINITY;
-            c.hi_closed = false;
-        }
-        (j, c)
+        let span = unit_span(x, n);
+        (span.lo as usize, beyond(span, x, (0.0, n as f64)))
     })
+}
+
+/// Piece `j = ⌊u⌋` of `pieces` unit pieces, `[j, j + 1)`, clamped to the first and last (the
+/// last closed).
+pub(crate) fn unit_span(u: f64, pieces: usize) -> Span {
+    let j = unit_index(u, pieces);
+    Span {
+        lo: j as f64,
+        hi: j as f64 + 1.0,
+        closed: j + 1 >= pieces,
+    }
 }
 
 /// `⌊x⌋` clamped to `0 … n − 1` (NaN and negative values to 0).
@@ -272,13 +270,19 @@ pub(crate) fn unit_index(x: f64, n: usize) -> usize {
 
 /// The condition of piece `k` for the value `x` (see [`piece`]).
 pub(crate) fn piece_condition(nodes: &[f64], k: usize, x: f64) -> Condition {
-    let last = nodes.len() - 2;
-    let mut c = Condition::from(Span::of(nodes, k));
-    if k == 0 && x < nodes[0] {
+    beyond(Span::of(nodes, k), x, (nodes[0], nodes[nodes.len() - 1]))
+}
+
+/// The condition of the piece `span` picked for `x` on the domain `[a, b]`: the span itself,
+/// extended to `−∞` when `x < a` and to `+∞` when `x > b` (the end pieces that piecewise
+/// objects extrapolate hold there).
+pub(crate) fn beyond(span: Span, x: f64, (a, b): (f64, f64)) -> Condition {
+    let mut c = Condition::from(span);
+    if x < a {
         c.lo = f64::NEG_INFINITY;
         c.lo_closed = false;
     }
-    if k == last && x > nodes[last + 1] {
+    if x > b {
         c.hi = f64::INFINITY;
         c.hi_closed = false;
     }

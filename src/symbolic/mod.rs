@@ -248,17 +248,19 @@ impl Trace {
     /// one variable are intersected into one (`u ∈ [3/2, 2)`).
     pub fn pieces(&self) -> Vec<(String, Condition)> {
         let claims = ARENA.with(|a| a.borrow().claims.clone());
-        let names = current_names();
+        let (names, point) = (current_names(), current_point());
         let mut out: Vec<(String, Condition)> = Vec::new();
         for (id, c) in claims {
             let e = Expr::from_id(id, f64::NAN, self.generation);
-            let formula = Formula::capture(&e, &names, &current_point());
-            let (what, c) = match formula.as_ref().ok().and_then(Formula::affine) {
-                Some((i, a, b)) => (
-                    names.get(i as usize).cloned().unwrap_or_default(),
-                    c.pulled_back(a, b),
-                ),
-                None => (self.describe_node(id), c),
+            let (what, c) = match Formula::capture(&e, &names, &point) {
+                Ok(f) => match f.affine() {
+                    Some((i, a, b)) => (
+                        names.get(i as usize).cloned().unwrap_or_default(),
+                        c.pulled_back(a, b),
+                    ),
+                    None => (f.plain(), c),
+                },
+                Err(err) => (format!("<{err}>"), c),
             };
             match out.iter_mut().find(|(w, _)| *w == what) {
                 Some((_, known)) => *known = known.intersect(&c),
@@ -274,13 +276,14 @@ impl Trace {
         let reads = ARENA.with(|a| a.borrow().reads.clone());
         reads
             .into_iter()
-            .map(|(id, value)| format!("{} = {}", self.describe_node(id), number(value)))
+            .map(|(id, value)| format!("{} = {}", self.describe_node(id, value), number(value)))
             .collect()
     }
 
-    /// The plain formula of node `id` of this trace (for conditions).
-    fn describe_node(&self, id: u32) -> String {
-        let e = Expr::from_id(id, f64::NAN, self.generation);
+    /// The plain formula of node `id` of this trace, whose traced value is `value` (for
+    /// conditions).
+    fn describe_node(&self, id: u32, value: f64) -> String {
+        let e = Expr::from_id(id, value, self.generation);
         match Formula::capture(&e, &current_names(), &current_point()) {
             Ok(f) => f.plain(),
             Err(err) => format!("<{err}>"),
@@ -290,16 +293,9 @@ impl Trace {
     /// The conditions the numeric path took on the way (`s - 1/4 > 0`, …), in order.
     pub fn branches(&self) -> Vec<String> {
         let branches = ARENA.with(|a| a.borrow().branches.clone());
-        let (names, point) = (current_names(), current_point());
         branches
             .into_iter()
-            .map(|(id, what, value)| {
-                let e = Expr::from_id(id, value, self.generation);
-                match Formula::capture(&e, &names, &point) {
-                    Ok(f) => format!("{} {what}", f.plain()),
-                    Err(err) => format!("<{err}> {what}"),
-                }
-            })
+            .map(|(id, what, value)| format!("{} {what}", self.describe_node(id, value)))
             .collect()
     }
 }

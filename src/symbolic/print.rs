@@ -4,7 +4,9 @@
 //! rationals printed as fractions, others as the shortest decimal that reads back to the
 //! same `f64`.
 
-use super::canon::{atan2_bound, pow_bound, Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
+use super::canon::{
+    apply_bound, atan2_bound, pow_bound, Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE,
+};
 use super::display::escape;
 use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
@@ -156,60 +158,7 @@ impl Formula {
             let mut traced: FastMap<u32, (f64, f64)> = FastMap::default();
             traced.reserve(reach.len());
             for id in reach {
-                let v = |k: u32| traced[&k];
-                let bound = match a.nodes[id as usize] {
-                    Node::Num(c) => (c, 0.0),
-                    Node::Var(i) => (point.get(i as usize).copied().unwrap_or(f64::NAN), 0.0),
-                    Node::Add(x, y) => {
-                        let ((x, ex), (y, ey)) = (v(x), v(y));
-                        (x + y, ex + ey + (x + y).abs())
-                    }
-                    Node::Mul(x, y) => {
-                        let ((x, ex), (y, ey)) = (v(x), v(y));
-                        (x * y, y.abs() * ex + x.abs() * ey + (x * y).abs())
-                    }
-                    Node::Div(x, y) => {
-                        let ((x, ex), (y, ey)) = (v(x), v(y));
-                        let q = x / y;
-                        (q, (ex + q.abs() * ey) / y.abs() + q.abs())
-                    }
-                    Node::Neg(x) => {
-                        let (x, ex) = v(x);
-                        (-x, ex)
-                    }
-                    Node::Powi(x, n) => {
-                        let (x, ex) = v(x);
-                        let p = x.powi(n);
-                        let d = if ex == 0.0 {
-                            0.0
-                        } else {
-                            (f64::from(n) * x.powi(n - 1)).abs() * ex
-                        };
-                        (p, d + f64::from(n).abs() * p.abs())
-                    }
-                    Node::Powf(x, p) => {
-                        let (x, ex) = v(x);
-                        let r = x.powf(p);
-                        (r, pow_bound(x, ex, p, 0.0, r))
-                    }
-                    Node::Pow(x, y) => {
-                        let ((x, ex), (y, ey)) = (v(x), v(y));
-                        let r = x.powf(y);
-                        (r, pow_bound(x, ex, y, ey, r))
-                    }
-                    Node::Apply(f, x) => {
-                        let (x, ex) = v(x);
-                        let y = f.apply(x);
-                        (y, f.slope(x) * ex + 2.0 * y.abs())
-                    }
-                    Node::Atan2(y, x) => {
-                        let ((y, ey), (x, ex)) = (v(y), v(x));
-                        let r = y.atan2(x);
-                        (r, atan2_bound(y, ey, x, ex, r))
-                    }
-                    Node::Opaque(_, _, value) => (value, 0.0),
-                    Node::TooLarge => (f64::NAN, 0.0),
-                };
+                let bound = traced_bound(a.nodes[id as usize], point, |k| traced[&k]);
                 traced.insert(id, bound);
                 let s = |k: u32| &done[&k];
                 let sum = match a.nodes[id as usize] {
@@ -390,6 +339,64 @@ impl Formula {
 impl std::fmt::Display for Formula {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.plain())
+    }
+}
+
+/// The value at the trace point of `node`, as the traced code computed it (from its
+/// children's values `v`), and that computation's first-order rounding bound in units of
+/// `ε`: the capture check's witness.
+fn traced_bound(node: Node, point: &[f64], v: impl Fn(u32) -> (f64, f64)) -> (f64, f64) {
+    match node {
+        Node::Num(c) => (c, 0.0),
+        Node::Var(i) => (point.get(i as usize).copied().unwrap_or(f64::NAN), 0.0),
+        Node::Add(x, y) => {
+            let ((x, ex), (y, ey)) = (v(x), v(y));
+            (x + y, ex + ey + (x + y).abs())
+        }
+        Node::Mul(x, y) => {
+            let ((x, ex), (y, ey)) = (v(x), v(y));
+            (x * y, y.abs() * ex + x.abs() * ey + (x * y).abs())
+        }
+        Node::Div(x, y) => {
+            let ((x, ex), (y, ey)) = (v(x), v(y));
+            let q = x / y;
+            (q, (ex + q.abs() * ey) / y.abs() + q.abs())
+        }
+        Node::Neg(x) => {
+            let (x, ex) = v(x);
+            (-x, ex)
+        }
+        Node::Powi(x, n) => {
+            let (x, ex) = v(x);
+            let p = x.powi(n);
+            let d = if ex == 0.0 {
+                0.0
+            } else {
+                (f64::from(n) * x.powi(n - 1)).abs() * ex
+            };
+            (p, d + f64::from(n).abs() * p.abs())
+        }
+        Node::Powf(x, p) => {
+            let (x, ex) = v(x);
+            let r = x.powf(p);
+            (r, pow_bound(x, ex, p, 0.0, r))
+        }
+        Node::Pow(x, y) => {
+            let ((x, ex), (y, ey)) = (v(x), v(y));
+            let r = x.powf(y);
+            (r, pow_bound(x, ex, y, ey, r))
+        }
+        Node::Apply(f, x) => {
+            let (x, ex) = v(x);
+            apply_bound(f, x, ex)
+        }
+        Node::Atan2(y, x) => {
+            let ((y, ey), (x, ex)) = (v(y), v(x));
+            let r = y.atan2(x);
+            (r, atan2_bound(y, ey, x, ex, r))
+        }
+        Node::Opaque(_, _, value) => (value, 0.0),
+        Node::TooLarge => (f64::NAN, 0.0),
     }
 }
 
