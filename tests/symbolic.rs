@@ -1092,3 +1092,38 @@ impl ParametricSurface for AsinSurface {
         Vector3::new(s, t, (s * t * 0.5).asin())
     }
 }
+
+#[test]
+fn local_formulas_and_the_corpus_refuse_bad_points() {
+    use splinelab::report::formula_corpus::{curve_entry, surface_entry};
+    let pts: Vec<nalgebra::Vector2<f64>> = (0..6)
+        .map(|i| nalgebra::Vector2::new(i as f64, (i % 2) as f64))
+        .collect();
+    let curve = BSplineCurve::with_order(pts, 4).unwrap();
+    for t in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(matches!(
+            splinelab::symbolic::curve_formulas_local(&curve, t),
+            Err(Error::NonFinite { .. })
+        ));
+        assert!(curve_entry("bad", &curve, t, true).is_err());
+        assert!(surface_entry("bad", &Torus::new(2.0, 1.0), (t, 0.5), [(0.0, 1.0); 2]).is_err());
+    }
+    // far outside the domain: the end piece's extrapolation, claimed beyond the domain
+    let far = splinelab::symbolic::curve_formulas_local(&curve, 1e300).unwrap();
+    assert_eq!(far.span, None, "{:?}", far.branches);
+    assert!(
+        far.branches.iter().any(|b| b.contains("t ≥")),
+        "{:?}",
+        far.branches
+    );
+    // the corpus as shipped builds, every entry with samples and finite references
+    let corpus = splinelab::report::formula_corpus::corpus().unwrap();
+    assert!(corpus.len() >= 40);
+    for e in &corpus {
+        assert!(!e.samples.is_empty(), "{}", e.name);
+        for (at, values) in &e.samples {
+            assert_eq!(values.len(), e.formulas.len(), "{}", e.name);
+            assert!(at.iter().chain(values).all(|v| v.is_finite()), "{}", e.name);
+        }
+    }
+}
