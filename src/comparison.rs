@@ -9,7 +9,10 @@
 //! bounding-box side ([`crate::shapes::TOLERANCE_FRACTION`], spec decision A12).
 
 use crate::error::{Error, Result};
-use crate::interp::choice::{fewest_points, Choice, Family, Measure, SearchOptions, Target};
+use crate::interp::choice::{
+    fewest_points, search, Attempt, Choice, Family, Measure, Minimality, SearchOptions, Start,
+    Target,
+};
 use crate::interp::methods::Method;
 use crate::seeds::seed004::{paper_points, PrintedCell, SHAPES, TABLE_I};
 use crate::shapes::{Shape, TOLERANCE_FRACTION};
@@ -47,6 +50,7 @@ impl Configuration {
             measure: self.measure,
             within_tolerance: self.measure.distances.hausdorff() <= tolerance,
             evaluations: 0,
+            start: Start::Known,
         }
     }
 }
@@ -76,6 +80,18 @@ pub struct CellStudy {
     /// The fewest points found by the automatic search (parameter, end condition or order
     /// chosen too), started below [`CellStudy::paper_rule`]'s count.
     pub automatic: Choice,
+    /// Every count the search tried with the full budget ([`crate::interp::choice::search`]).
+    pub attempts: Vec<Attempt>,
+    /// Whether the automatic count is known to be the fewest.
+    pub minimality: Minimality,
+}
+
+impl CellStudy {
+    /// The count one point below the automatic one, if it was searched.
+    pub fn below(&self) -> Option<&Attempt> {
+        let n = self.automatic.measure.counted.checked_sub(1)?;
+        self.attempts.iter().find(|a| a.counted == n)
+    }
 }
 
 /// How our automatic count compares with the printed one.
@@ -209,7 +225,7 @@ pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStu
         known: paper_rule.as_ref().map(|c| c.choice(tolerance)),
         ..options.clone()
     };
-    let automatic = fewest_points(&target, family, &options)?;
+    let found = search(&target, family, &options)?;
     Ok(CellStudy {
         cell: *cell,
         column,
@@ -219,7 +235,9 @@ pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStu
         shape_inflections: target.shape_inflections(),
         printed,
         paper_rule,
-        automatic,
+        automatic: found.choice,
+        attempts: found.attempts,
+        minimality: found.minimality,
     })
 }
 

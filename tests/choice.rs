@@ -8,7 +8,9 @@ use common::hausdorff;
 use nalgebra::Vector2;
 use splinelab::comparison::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
 use splinelab::curve_metrics::sample_pieces;
-use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target, FINAL_SAMPLES};
+use splinelab::interp::choice::{
+    fewest_points, search, Family, Minimality, SearchOptions, Target, FINAL_SAMPLES,
+};
 use splinelab::interp::methods::{CubicEnd, Method};
 use splinelab::seeds::seed004::{paper_points, TABLE_I};
 use splinelab::shapes::Shape;
@@ -55,17 +57,8 @@ fn automatic_counts_never_exceed_the_paper_rule_and_their_errors_hold() {
     assert_eq!(cells.len(), 36);
     for (index, study) in cells.iter().enumerate() {
         let auto = &study.automatic;
-        if auto.method == Method::Angular && matches!(study.shape, Shape::Rectangle { .. }) {
-            // a G¹ curve has no corners, and Angular points on a polygon cannot avoid the
-            // collinear triples that have no G¹ piece (issue 23): the search reports its best
-            // valid configuration, honestly out of tolerance
-            assert!(!auto.within_tolerance, "cell {index}: {auto:?}");
-            assert!(auto.measure.distances.hausdorff() > study.tolerance);
-            // and the verdict does not call its count "fewer" (or any count at all)
-            assert_eq!(study.verdict().0, Verdict::NoneWithin, "cell {index}");
-            assert!(study.verdict().1.contains("no configuration found"));
-            continue;
-        }
+        // every cell has a count within 1 % (issue 25: the Angular rectangle too, its points
+        // clustered at the corners, which the local search of issue 23 did not reach)
         assert!(auto.within_tolerance, "cell {index}: {auto:?}");
         assert_ne!(study.verdict().0, Verdict::NoneWithin, "cell {index}");
         if let Some(rule) = &study.paper_rule {
@@ -120,11 +113,17 @@ fn a_polygon_gets_its_corners() {
     let linear = fewest_points(&target, Family::Linear, &SearchOptions::default()).unwrap();
     assert_eq!(linear.measure.counted, 5);
     assert!(linear.measure.distances.hausdorff() <= 1e-12);
-    // the Angular spline is G¹: its points cannot make corners (a collinear triple beside a
-    // turn has no G¹ piece, issue 23), so it misses the polygon, and says so
+    // the Angular spline is G¹: it rounds the corners, so it needs points clustered at each
+    // (a collinear triple beside a turn has no G¹ piece, issue 23); whatever it reports is a
+    // valid spline whose error is what it claims
     let angular = fewest_points(&target, Family::Angular, &SearchOptions::default()).unwrap();
-    assert!(!angular.within_tolerance);
     assert!(splinelab::AngularSpline::closed(&angular.points).is_ok());
+    let again = target.measure(&Method::Angular, &angular.points).unwrap();
+    assert_eq!(again, angular.measure);
+    assert_eq!(
+        angular.within_tolerance,
+        again.distances.hausdorff() <= target.tolerance()
+    );
 }
 
 #[test]
@@ -136,7 +135,7 @@ fn an_impossible_tolerance_is_reported_not_hidden() {
     let options = SearchOptions {
         max_points: 6,
         budget_per_coordinate: 2,
-        known: None,
+        ..SearchOptions::default()
     };
     for family in [Family::Angular, Family::Cubic, Family::BSpline] {
         let c = fewest_points(&target, family, &options).unwrap();
@@ -154,7 +153,8 @@ fn huge_search_options_stay_bounded() {
     let options = SearchOptions {
         max_points: 1_000_000,
         budget_per_coordinate: 1,
-        known: None,
+        every_count_below: false,
+        ..SearchOptions::default()
     };
     let c = fewest_points(&target, Family::Linear, &options).unwrap();
     assert!(!c.within_tolerance || c.measure.distances.hausdorff() <= 1e-12);
@@ -242,11 +242,14 @@ fn a_polygon_with_few_vertices_gets_points_on_its_sides() {
     let outer = &splinelab::seeds::seed004::polygonal_a()[0];
     let tolerance = splinelab::comparison::contour_tolerance(std::slice::from_ref(outer));
     let target = Target::polyline(outer, true, tolerance).unwrap();
-    // the Angular spline cannot draw its corners (G¹, issue 23): the best valid configuration
-    // is reported, out of tolerance; the cubic spline draws the same contour within it
+    // the Angular spline rounds its corners (G¹, issue 23): whatever it reports is a valid
+    // spline measured as claimed; the cubic spline draws the same contour within 1 %
     let c = fewest_points(&target, Family::Angular, &SearchOptions::default()).unwrap();
-    assert!(!c.within_tolerance, "{:?}", c.measure);
     assert!(splinelab::AngularSpline::closed(&c.points).is_ok());
+    assert_eq!(
+        c.within_tolerance,
+        c.measure.distances.hausdorff() <= target.tolerance()
+    );
     let cubic = fewest_points(&target, Family::Cubic, &SearchOptions::default()).unwrap();
     assert!(cubic.within_tolerance, "{:?}", cubic.measure);
 }
@@ -266,7 +269,7 @@ fn a_point_budget_below_the_family_minimum_is_refused() {
             let options = SearchOptions {
                 max_points,
                 budget_per_coordinate: 2,
-                known: None,
+                ..SearchOptions::default()
             };
             let r = fewest_points(&target, family, &options);
             assert!(
@@ -279,7 +282,7 @@ fn a_point_budget_below_the_family_minimum_is_refused() {
         let options = SearchOptions {
             max_points: fewest,
             budget_per_coordinate: 2,
-            known: None,
+            ..SearchOptions::default()
         };
         let c = fewest_points(&target, family, &options).unwrap();
         assert!(
@@ -288,4 +291,191 @@ fn a_point_budget_below_the_family_minimum_is_refused() {
             c.measure.counted
         );
     }
+}
+
+/// Issue 25: the automatic counts of the search before its global stage (commit 5ebd42e),
+/// row by row as `TABLE_I`; the Angular rectangle had none within 1 % (41 = beyond the
+/// search's 40). The global search may only do better.
+const COUNTS_BEFORE_ISSUE_25: [usize; 36] = [
+    6, 7, 7, 5, 5, 5, 5, 8, 41, // Angular
+    6, 6, 6, 6, 6, 5, 5, 6, 7, // cardinal
+    6, 6, 5, 5, 4, 3, 3, 4, 15, // cubic
+    5, 5, 5, 3, 3, 4, 3, 4, 5, // B-spline
+];
+
+#[test]
+fn no_count_is_worse_than_before_the_global_search_and_the_evidence_holds() {
+    let cells = table_i().unwrap();
+    for (index, (study, &before)) in cells.iter().zip(&COUNTS_BEFORE_ISSUE_25).enumerate() {
+        let auto = &study.automatic;
+        assert!(auto.within_tolerance, "cell {index}");
+        assert!(
+            auto.measure.counted <= before,
+            "cell {index}: {} > {before}",
+            auto.measure.counted
+        );
+        // every count below the answer was searched with the full budget and failed
+        // (B-splines: fitted with every order), unless the answer is the method's minimum
+        let below: Vec<usize> = study.attempts.iter().map(|a| a.counted).collect();
+        for a in &study.attempts {
+            if a.counted < auto.measure.counted {
+                assert!(!a.within_tolerance, "cell {index}: {a:?}");
+                assert!(a.starts > 0, "cell {index}: {a:?}");
+                if let Some(e) = a.best_error {
+                    assert!(e > study.tolerance, "cell {index}: {a:?}");
+                }
+            }
+        }
+        match study.minimality {
+            Minimality::MethodMinimum => assert!(study.below().is_none(), "cell {index}"),
+            Minimality::LowerBound { bound, .. } => {
+                assert!(bound > study.tolerance, "cell {index}");
+                // the search's own best with one fewer never beats the bound
+                let e = study.below().and_then(|b| b.best_error).unwrap();
+                assert!(e >= bound, "cell {index}: {e} < bound {bound}");
+            }
+            Minimality::Searched => {
+                let lowest = *below.first().unwrap();
+                for n in lowest..auto.measure.counted {
+                    assert!(below.contains(&n), "cell {index}: {n} not searched");
+                }
+                assert!(study.below().is_some(), "cell {index}");
+            }
+            other => panic!("cell {index}: {other:?}"),
+        }
+    }
+}
+
+/// Issue 25: a cardinal spline with `a = ½` and points at equal steps of the parameter
+/// reproduces every quadratic, so the parabola needs 4 points as the paper counts them (its
+/// ends and two guides one parameter step beyond): the earlier search, with guides on the
+/// shape just beyond the ends, found 6.
+#[test]
+fn the_cardinal_spline_draws_the_parabola_from_four_points() {
+    for half_width in [1.0, 2.0] {
+        let shape = Shape::Parabola { half_width };
+        let target = Target::shape(&shape, REFERENCE_SEGMENTS).unwrap();
+        let found = search(&target, Family::Cardinal, &SearchOptions::default()).unwrap();
+        let c = &found.choice;
+        assert_eq!(c.measure.counted, 4, "half width {half_width}");
+        assert!(c.within_tolerance);
+        assert_eq!(found.minimality, Minimality::MethodMinimum);
+        // exact up to the reference's own chords: far below the tolerance, checked
+        // independently on another reference
+        let brute = brute_error(&shape, &c.method, &c.points);
+        assert!(brute <= 1e-2 * target.tolerance(), "{brute}");
+        assert_eq!(c.method, Method::Cardinal { a: 0.5 });
+        // the closed form: the guides are the parabola at ∓3 X
+        let x = half_width;
+        let g = [V::new(-3.0 * x, 9.0 * x * x), V::new(3.0 * x, 9.0 * x * x)];
+        assert!((c.points[0] - g[0]).norm() <= 1e-9 * x && (c.points[3] - g[1]).norm() <= 1e-9 * x);
+    }
+}
+
+/// The bound behind the closed Angular cells: a closed Angular spline through 3 points is
+/// their circumcircle, so its error on an ellipse is at least a quarter of the difference of
+/// the ellipse's widths.
+#[test]
+fn a_closed_angular_spline_through_three_points_is_their_circumcircle() {
+    let mut state = 12345u64;
+    let mut unit = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..200 {
+        let p: Vec<V> = (0..3)
+            .map(|_| V::new(4.0 * unit() - 2.0, 4.0 * unit() - 2.0))
+            .collect();
+        let Ok(curve) = Method::Angular.curve(&p, true) else {
+            continue;
+        };
+        // the circumcentre, by its closed form
+        let (a, b, c) = (p[0], p[1], p[2]);
+        let d = 2.0 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
+        if d.abs() < 1e-3 {
+            continue;
+        }
+        let sq = |v: V| v.norm_squared();
+        let centre = V::new(
+            (sq(a) * (b.y - c.y) + sq(b) * (c.y - a.y) + sq(c) * (a.y - b.y)) / d,
+            (sq(a) * (c.x - b.x) + sq(b) * (a.x - c.x) + sq(c) * (b.x - a.x)) / d,
+        );
+        let r = (a - centre).norm();
+        let line = sample_pieces(&curve, &curve.breaks(), 64).unwrap();
+        for q in line {
+            assert!(
+                ((q - centre).norm() - r).abs() <= 1e-9 * r.max(1.0),
+                "{p:?}"
+            );
+        }
+    }
+    // the bound, against brute-force widths over many directions
+    let ellipse = Shape::Ellipse { ratio: 0.7 }.reference(2048).unwrap();
+    let (least, diameter) = splinelab::interp::choice::bound::widths(&ellipse);
+    let width = |t: f64| {
+        let u = V::new(t.cos(), t.sin());
+        let (lo, hi) = ellipse
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.dot(&u)), hi.max(p.dot(&u)))
+            });
+        hi - lo
+    };
+    let brute: Vec<f64> = (0..3600)
+        .map(|k| width(std::f64::consts::PI * k as f64 / 3600.0))
+        .collect();
+    let brute_min = brute.iter().copied().fold(f64::INFINITY, f64::min);
+    let brute_max = brute.iter().copied().fold(0.0, f64::max);
+    assert!(
+        least <= brute_min + 1e-12 && least >= brute_min - 1e-6,
+        "{least} {brute_min}"
+    );
+    assert!(diameter >= brute_max - 1e-12 && diameter <= brute_max + 1e-6);
+    assert!((least - 1.4).abs() < 1e-5 && (diameter - 2.0).abs() < 1e-12);
+}
+
+/// Issue 25: a closed shape whose fewest points only a symmetric placement reaches — the
+/// superellipse `|x|⁴ + |y/0.6|⁴ = 1`, its reference starting off both axes. The cardinal
+/// spline draws it with 4 points + 3 repeats placed symmetrically about an axis (searched in
+/// the mirror's own variables); from the plain starts the search finds 8, the earlier search
+/// 9.
+#[test]
+fn a_symmetric_start_reaches_the_superellipse_minimum() {
+    let n = 2048;
+    let poly: Vec<V> = (0..n)
+        .map(|i| {
+            let t = 0.3 + std::f64::consts::TAU * i as f64 / n as f64;
+            let (c, s) = (t.cos(), t.sin());
+            V::new(
+                c.signum() * c.abs().sqrt(),
+                0.6 * s.signum() * s.abs().sqrt(),
+            )
+        })
+        .collect();
+    let target = Target::polyline(&poly, true, 0.02).unwrap();
+    let found = search(&target, Family::Cardinal, &SearchOptions::default()).unwrap();
+    let c = &found.choice;
+    assert!(c.within_tolerance);
+    assert_eq!(c.measure.counted, 7, "{:?}", found.attempts);
+    assert_eq!(c.start, splinelab::interp::choice::Start::Symmetric);
+    // the two axes were found, and the points are symmetric about one of them
+    assert_eq!(
+        splinelab::interp::choice::symmetry::mirrors(&target).len(),
+        2
+    );
+    let mirrored = splinelab::interp::choice::symmetry::mirrors(&target)
+        .iter()
+        .any(|m| {
+            c.points.iter().all(|p| {
+                let q = m.isometry.apply(*p);
+                c.points.iter().any(|r| (q - r).norm() <= 1e-6)
+            })
+        });
+    assert!(mirrored, "{:?}", c.points);
+    // and it meets the tolerance by an independent measure
+    let curve = c.method.curve(&c.points, true).unwrap();
+    let line = sample_pieces(&curve, &curve.breaks(), FINAL_SAMPLES).unwrap();
+    assert!(hausdorff(&line, &poly) <= 0.02 * 1.001);
 }

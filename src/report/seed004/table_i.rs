@@ -63,6 +63,8 @@ pub fn table() -> Result<Table> {
     let mut auto_ok = vec![];
     let (mut infl, mut shape_infl, mut jump) = (vec![], vec![], vec![]);
     let (mut verdicts, mut whys) = (vec![], vec![]);
+    let (mut start, mut below_n, mut below_err, mut below_starts, mut minimal) =
+        (vec![], vec![], vec![], vec![], vec![]);
     for c in cells {
         let s = c.size;
         column.push(c.column.to_string());
@@ -89,6 +91,15 @@ pub fn table() -> Result<Table> {
         infl.push(m.smoothness.inflections as u32);
         shape_infl.push(c.shape_inflections.map(|n| n as u32));
         jump.push(m.smoothness.max_jump);
+        start.push(match c.automatic.start {
+            crate::interp::choice::Start::Known => "paper's rule",
+            other => other.label(),
+        });
+        let below = c.below();
+        below_n.push(below.map(|b| b.counted as u32));
+        below_err.push(below.and_then(|b| b.best_error).map(|e| pct(e, s)));
+        below_starts.push(below.map(|b| b.starts as u32));
+        minimal.push(c.minimality.describe(s));
         let (v, why) = c.verdict();
         verdicts.push(v.label().to_string());
         whys.push(why);
@@ -110,6 +121,11 @@ pub fn table() -> Result<Table> {
             Column::new("auto_parameter".into(), auto_param),
             Column::new("auto_error_pct".into(), auto_err),
             Column::new("auto_within_1pct".into(), auto_ok),
+            Column::new("auto_start".into(), start),
+            Column::new("minimality".into(), minimal),
+            Column::new("one_fewer_points".into(), below_n),
+            Column::new("one_fewer_best_error_pct".into(), below_err),
+            Column::new("one_fewer_starts".into(), below_starts),
             Column::new("auto_curve_to_shape_pct".into(), auto_c2s),
             Column::new("auto_shape_to_curve_pct".into(), auto_s2c),
             Column::new("auto_inflections".into(), infl),
@@ -137,7 +153,8 @@ pub fn table() -> Result<Table> {
     Ok(Table::new(id, "Seed 004 Table I regenerated: printed, the paper's rule, and the fewest points found automatically (tolerance 1 % of the larger bounding-box side)", df)
         .note("Errors: symmetric Hausdorff distance between the curve (256 samples per piece) and the exact shape (2048-segment reference), in % of the shape's larger bounding-box side; the tolerance is 1 % (spec A12: it makes the relaxed cubic circle's first count under 1 % the printed 11). curve_to_shape / shape_to_curve are the one-sided distances.")
         .note("printed_*: the printed count and parameter with points placed by the stated rule (seeds::seed004::paper_points; the paper's hand-chosen points are lost). rule_*: the fewest points with that rule and the printed parameter meeting 1 % (— where the rule places no more points, e.g. the sinusoid's extrema, or none up to 40 does).")
-        .note("auto_*: interp::choice::fewest_points — initial placement by arc length and turning (corners get points), error equidistribution, compass search on positions, guides and a (cardinal, to 0.001), best of relaxed/cyclic/anticyclic (cubic); B-splines: least-squares polygons of every order 2–12. Started from the paper's rule count, so auto_points ≤ rule_points (tested). The search is local: a count it reports as needed may be beaten by a placement it does not reach.")
+        .note("auto_*: interp::choice::search — a deterministic multistart search for each count: equal steps of arc length, of arc length mixed with the turning and of the shape's own parameter, a point on every corner, placements symmetric about each mirror axis (searched in the mirror's variables), 8 seeded random starts per layout; open curves' guides free in the plane (on the shape beyond the ends, one parameter step beyond, the chord continued); the cardinal a (to 0.001) and the cubic's relaxed/cyclic/anticyclic ends searched with the positions; error equidistribution, then compass search from the best start of each family. Every count below the answer is searched with the full budget (not assumed to fail), so auto_points ≤ rule_points (tested). B-splines: least-squares polygons of every order 2–12 at every vertex count.")
+        .note("Evidence: auto_start is the start family the answer came from (paper's rule: no lower count was found, the rule's configuration stands); one_fewer_* the best error found with one point fewer and the starts tried there (B-splines: the orders fitted); minimality says whether the count is proven the fewest — the method's minimum, or a lower bound on everything one point fewer draws (interp::choice::bound: a closed Angular spline through 3 points is their circumcircle, whose error on a shape is at least a quarter of the difference of its largest and least widths, less a sampling margin; an open 2-vertex B-spline is a segment, error at least half the least width) — or only the fewest found by the search.")
         .note("Smoothness: inflections = sign changes of the curvature κL beyond |κL| > 0.1 (L = larger bounding-box side), against the shape's own; max_curvature_jump = the largest jump of κL across a break between pieces (0 for C² curves; the Angular and cardinal splines are only G¹/C¹). Extra inflections within 1 % are wiggles a pen would hide; the table reports them rather than rejecting the curve.")
         .note(format!("{fewer} of {} cells need fewer points than printed, {same} the same, {} more (of these, {missed} where the printed configuration misses 1 % with our point rule (printed_error_pct) and {impossible} where the printed count cannot be drawn), and in {} no configuration the search tried meets 1 %{}.", cells.len(), more.len(), none.len(), if none.is_empty() { String::new() } else { format!(" ({}: auto_within_1pct is no, the count shown is the one with the smallest error found, not a count that suffices; the Angular spline is G¹, so it rounds a polygon's corners, and with points on the outline three on one side have no Angular piece)", none.join(", ")) })))
 }
@@ -319,7 +336,8 @@ pub fn fewest_study() -> Result<&'static [(Job, ContourStudy)]> {
     let options = SearchOptions {
         max_points: CONTOUR_MAX_POINTS,
         budget_per_coordinate: 10,
-        known: None,
+        every_count_below: false,
+        ..SearchOptions::default()
     };
     let results: Vec<crate::Result<ContourStudy>> = crate::parallel::map(&jobs, |job| {
         fewest_for_contours(&job.1, contour_tolerance(&job.1), job.2, &options)

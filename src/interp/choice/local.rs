@@ -1,0 +1,258 @@
+//! The local stages of a search (module docs of [`super`], steps 2–4): the cardinal `a` on
+//! a grid, error equidistribution, compass search, and the dense measure of the result.
+
+use super::layout::Layout;
+use super::target::Target;
+use super::{Choice, Family, Scratch, Start, GOAL, SEARCH_SAMPLES};
+use crate::curve_metrics::{sample_pieces_into, SegmentTree};
+use crate::error::Result;
+use crate::interp::methods::Interpolant;
+
+/// The cardinal `a` set to the best of a coarse grid (other families: unchanged), with the
+/// error of the result.
+pub(super) fn tune_parameter(
+    target: &Target,
+    layout: &Layout,
+    mut x: Vec<f64>,
+    scratch: &mut Scratch,
+) -> (Vec<f64>, f64, usize) {
+    let mut evals = 0;
+    if layout.family != Family::Cardinal {
+        let e = error_of(target, layout, &x, scratch);
+        return (x, e, 1);
+    }
+    let last = x.len() - 1;
+    let mut best = (f64::INFINITY, x[last]);
+    let own = x[last];
+    for a in [own, 0.001, 0.25, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.5] {
+        x[last] = a;
+        let e = error_of(target, layout, &x, scratch);
+        evals += 1;
+        if e < best.0 {
+            best = (e, a);
+        }
+    }
+    x[last] = best.1;
+    (x, best.0, evals)
+}
+
+pub(super) fn error_of(target: &Target, layout: &Layout, x: &[f64], scratch: &mut Scratch) -> f64 {
+    match layout.points(target, x) {
+        Some(points) => target.search_error(&layout.method(x), &points, scratch),
+        None => f64::INFINITY,
+    }
+}
+
+/// Step 2 of the module docs: a few damped rounds of error equidistribution over the arcs
+/// between points, keeping the best.
+pub(super) fn equidistribute(
+    target: &Target,
+    layout: &Layout,
+    x: Vec<f64>,
+    e: f64,
+    scratch: &mut Scratch,
+) -> (Vec<f64>, f64, usize) {
+    const ROUNDS: usize = 8;
+    const P: f64 = 2.0;
+    if layout.symmetric.is_some() {
+        // a rescaling of every arc would break the mirror pairs: symmetric starts go to
+        // the compass search as they are
+        return (x, e, 0);
+    }
+    let mut best = (x.clone(), e);
+    let mut x = x;
+    let mut evals = 0;
+    let len = target.length();
+    for _ in 0..ROUNDS {
+        let Some(s) = layout.arcs(target, &x) else {
+            break;
+        };
+        let Some(points) = layout.points(target, &x) else {
+            break;
+        };
+        let Ok(curve) = layout.method(&x).curve(&points, layout.closed) else {
+            break;
+        };
+        let Some(errors) = arc_errors(target, &curve, &s, scratch) else {
+            break;
+        };
+        // Δⱼ' ∝ cⱼ^{−1/p}, cⱼ = eⱼ / Δⱼᵖ, floored so exact arcs do not take everything
+        let arcs: Vec<f64> = (0..errors.len())
+            .map(|j| {
+                let next = if j + 1 < s.len() {
+                    s[j + 1]
+                } else {
+                    s[0] + len
+                };
+                next - s[j]
+            })
+            .collect();
+        let c: Vec<f64> = errors
+            .iter()
+            .zip(&arcs)
+            .map(|(&e, &d)| e / d.powf(P))
+            .collect();
+        let cmax = c.iter().copied().fold(0.0, f64::max);
+        if !(cmax > 0.0 && cmax.is_finite()) {
+            break;
+        }
+        let want: Vec<f64> = c
+            .iter()
+            .map(|&cj| cj.max(1e-3 * cmax).powf(-1.0 / P))
+            .collect();
+        let total: f64 = want.iter().sum();
+        let span = arcs.iter().sum::<f64>();
+        // damped: the geometric mean of the old and the wanted arcs, renormalised
+        let mixed: Vec<f64> = arcs
+            .iter()
+            .zip(&want)
+            .map(|(&d, &w)| (d * w * span / total).sqrt())
+            .collect();
+        let norm = span / mixed.iter().sum::<f64>();
+        let mut acc = s[0];
+        let mut new_s = vec![s[0]];
+        for d in &mixed[..mixed.len() - usize::from(!layout.closed)] {
+            acc += d * norm;
+            new_s.push(acc);
+        }
+        if layout.closed {
+            new_s.pop();
+        }
+        let k = layout.positions();
+        let inner = if layout.closed {
+            &new_s[..]
+        } else {
+            &new_s[1..new_s.len().min(k + 1)]
+        };
+        if inner.len() != k {
+            break;
+        }
+        x[..k].copy_from_slice(inner);
+        let e = error_of(target, layout, &x, scratch);
+        evals += 1;
+        if e < best.1 {
+            best = (x.clone(), e);
+        }
+    }
+    (best.0, best.1, evals)
+}
+
+/// The largest distance of the reference between consecutive points (arc positions `s`,
+/// sorted in `[0, L)` for a closed target) to the curve, per arc; `None` if the curve cannot
+/// be sampled.
+fn arc_errors(
+    target: &Target,
+    curve: &Interpolant,
+    s: &[f64],
+    scratch: &mut Scratch,
+) -> Option<Vec<f64>> {
+    sample_pieces_into(curve, &curve.breaks(), SEARCH_SAMPLES, &mut scratch.line).ok()?;
+    let tree = SegmentTree::new(&scratch.line).ok()?;
+    let arcs = if target.is_closed() {
+        s.len()
+    } else {
+        s.len() - 1
+    };
+    let mut errors = vec![0.0; arcs];
+    let len = target.length();
+    for (p, &a) in target.reference().iter().zip(target.arcs()) {
+        // the arc j with s[j] ≤ a < s[j + 1] (closed: a before the first point belongs to
+        // the arc that wraps past the last)
+        let a = if target.is_closed() && a < s[0] {
+            a + len
+        } else {
+            a
+        };
+        let j = s
+            .partition_point(|&v| v <= a)
+            .saturating_sub(1)
+            .min(arcs - 1);
+        let d = tree.distance(*p);
+        if d > errors[j] {
+            errors[j] = d;
+        }
+    }
+    Some(errors)
+}
+
+/// Step 3 of the module docs: compass search from `x` (error `e`) within `budget`
+/// evaluations, stopping early at [`GOAL`] of the tolerance (the coarse error a little below
+/// it, so the dense check passes).
+pub(super) fn compass(
+    target: &Target,
+    layout: &Layout,
+    mut x: Vec<f64>,
+    mut e: f64,
+    budget: usize,
+    scratch: &mut Scratch,
+) -> (Vec<f64>, f64, usize) {
+    let len = target.length();
+    let k = layout.positions();
+    let mut h: Vec<f64> = (0..x.len())
+        .map(|j| {
+            if j < k + layout.guide_coordinates() {
+                0.25 * len / layout.on_shape as f64
+            } else {
+                0.1
+            }
+        })
+        .collect();
+    let floor: Vec<f64> = h.iter().map(|v| v / 256.0).collect();
+    let mut evals = 0;
+    let goal = GOAL * target.tolerance();
+    while evals < budget && e > goal {
+        let mut improved = false;
+        for j in 0..x.len() {
+            for sign in [1.0, -1.0] {
+                let old = x[j];
+                x[j] = old + sign * h[j];
+                let f = error_of(target, layout, &x, scratch);
+                evals += 1;
+                if f < e {
+                    e = f;
+                    improved = true;
+                    break;
+                }
+                x[j] = old;
+            }
+            if evals >= budget {
+                break;
+            }
+        }
+        if !improved {
+            let mut all_small = true;
+            for (hj, fj) in h.iter_mut().zip(&floor) {
+                *hj *= 0.5;
+                all_small &= *hj < *fj;
+            }
+            if all_small {
+                break;
+            }
+        }
+    }
+    (x, e, evals)
+}
+
+/// The configuration of `x` measured densely.
+pub(super) fn finish(
+    target: &Target,
+    layout: &Layout,
+    x: &[f64],
+    start: Start,
+) -> Result<Option<Choice>> {
+    let Some(points) = layout.points(target, x) else {
+        return Ok(None);
+    };
+    let method = layout.method(x);
+    let Ok(measure) = target.measure(&method, &points) else {
+        return Ok(None);
+    };
+    Ok(Some(Choice {
+        method,
+        points,
+        within_tolerance: measure.distances.hausdorff() <= target.tolerance(),
+        measure,
+        evaluations: 0,
+        start,
+    }))
+}
