@@ -383,16 +383,18 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
     let top = found.as_ref().map_or(max + 1, |f| f.0);
     // 2. the counts below it, each with the full budget
     let mut attempts: Vec<(usize, Attempt, Option<Choice>)> = Vec::new();
-    let mut full = |n: usize, evaluations: &mut usize| -> Result<Option<Choice>> {
-        let (attempt, best, evals) = full_search(target, family, n, options)?;
-        *evaluations += evals;
-        let success = best.as_ref().filter(|c| c.within_tolerance).cloned();
-        attempts.push((n, attempt, best));
-        Ok(success)
-    };
+    type Tried = Vec<(usize, Attempt, Option<Choice>)>;
+    let full =
+        |n: usize, evaluations: &mut usize, attempts: &mut Tried| -> Result<Option<Choice>> {
+            let (attempt, best, evals) = full_search(target, family, n, options)?;
+            *evaluations += evals;
+            let success = best.as_ref().filter(|c| c.within_tolerance).cloned();
+            attempts.push((n, attempt, best));
+            Ok(success)
+        };
     if options.every_count_below {
         for n in min..top {
-            if let Some(c) = full(n, &mut evaluations)? {
+            if let Some(c) = full(n, &mut evaluations, &mut attempts)? {
                 found = Some((n, c));
                 break;
             }
@@ -408,7 +410,7 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
             } else {
                 bad + (ok - bad) / 2
             };
-            match full(n, &mut evaluations)? {
+            match full(n, &mut evaluations, &mut attempts)? {
                 Some(c) => {
                     ok = n;
                     found = Some((n, c));
@@ -423,7 +425,7 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
     }
     if found.is_none() && attempts.iter().all(|a| a.2.is_none()) {
         if let Some((_, n)) = nearest.filter(|&(_, n)| attempts.iter().all(|a| a.0 != n)) {
-            full(n, &mut evaluations)?;
+            full(n, &mut evaluations, &mut attempts)?;
         }
     }
     attempts.sort_by_key(|a| a.0);
