@@ -2030,7 +2030,7 @@ proptest! {
             }
             if let Ok(target) = Target::polyline(&pts, closed, tol) {
                 prop_assert!(target.length() > 0.0 && target.length().is_finite());
-                let options = SearchOptions { max_points: 8, budget_per_coordinate: 2, known: None };
+                let options = SearchOptions { max_points: 8, budget_per_coordinate: 2, random_starts: 1, every_count_below: false, ..SearchOptions::default() };
                 let family = [Family::Angular, Family::Cardinal, Family::Cubic, Family::BSpline, Family::Linear][family];
                 {
                     if let Ok(c) = fewest_points(&target, family, &options) {
@@ -2674,7 +2674,7 @@ proptest! {
             let Ok(target) = Target::polyline(&outline, closed, 0.05 * size) else {
                 return Ok(());
             };
-            let options = SearchOptions { max_points, budget_per_coordinate: 2, known: None };
+            let options = SearchOptions { max_points, budget_per_coordinate: 2, random_starts: 1, every_count_below: false, ..SearchOptions::default() };
             let Ok(c) = fewest_points(&target, family, &options) else {
                 return Ok(());
             };

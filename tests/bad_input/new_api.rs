@@ -266,7 +266,7 @@ fn options(max_points: usize) -> SearchOptions {
     SearchOptions {
         max_points,
         budget_per_coordinate: 10,
-        known: None,
+        ..SearchOptions::default()
     }
 }
 
@@ -290,6 +290,7 @@ fn bogus_choice(method: Method, points: Vec<Vector2<f64>>, counted: usize) -> Ch
         },
         within_tolerance: true,
         evaluations: 0,
+        start: splinelab::interp::choice::Start::Known,
     }
 }
 
