@@ -1891,7 +1891,7 @@ fn choice_cases() -> Vec<Case> {
                 &SearchOptions {
                     budget_per_coordinate: usize::MAX,
                     max_points: 8,
-                    known: None,
+                    ..SearchOptions::default()
                 },
             ))?;
             check_choice(&t, &c)
