@@ -1093,6 +1093,7 @@ impl ParametricSurface for AsinSurface {
     }
 }
 
+#[cfg(feature = "report")]
 #[test]
 fn local_formulas_and_the_corpus_refuse_bad_points() {
     use splinelab::report::formula_corpus::{curve_entry, surface_entry};
