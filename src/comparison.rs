@@ -89,8 +89,7 @@ pub struct CellStudy {
 impl CellStudy {
     /// The count one point below the automatic one, if it was searched.
     pub fn below(&self) -> Option<&Attempt> {
-        let n = self.automatic.measure.counted.checked_sub(1)?;
-        self.attempts.iter().find(|a| a.counted == n)
+        crate::interp::choice::attempt_below(&self.attempts, &self.automatic)
     }
 }
 

@@ -31,15 +31,11 @@ pub fn convex_hull(points: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
     let cross = |o: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>| {
         (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
     };
+    // the lower chain left to right, then the upper chain right to left
     let mut hull: Vec<Vector2<f64>> = Vec::with_capacity(2 * p.len());
-    for pass in 0..2 {
+    let chain = |hull: &mut Vec<Vector2<f64>>, points: &mut dyn Iterator<Item = Vector2<f64>>| {
         let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &Vector2<f64>>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in iter {
+        for q in points {
             while hull.len() >= start + 2
                 && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
             {
@@ -48,7 +44,9 @@ pub fn convex_hull(points: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
             hull.push(q);
         }
         hull.pop();
-    }
+    };
+    chain(&mut hull, &mut p.iter().copied());
+    chain(&mut hull, &mut p.iter().rev().copied());
     hull
 }
 

@@ -312,9 +312,14 @@ pub struct Search {
 impl Search {
     /// The count one point below the answer, if it was searched.
     pub fn below(&self) -> Option<&Attempt> {
-        let n = self.choice.measure.counted.checked_sub(1)?;
-        self.attempts.iter().find(|a| a.counted == n)
+        attempt_below(&self.attempts, &self.choice)
     }
+}
+
+/// The attempt one point below `choice`'s count among `attempts`, if it was searched.
+pub fn attempt_below<'a>(attempts: &'a [Attempt], choice: &Choice) -> Option<&'a Attempt> {
+    let n = choice.measure.counted.checked_sub(1)?;
+    attempts.iter().find(|a| a.counted == n)
 }
 
 /// The fewest points with which `family` draws `target` within its tolerance (module docs):
