@@ -18,8 +18,13 @@ use splinelab::curve_metrics::{
     segment_distance, smoothness, Distances, SegmentTree, Smoothness,
 };
 use splinelab::interp::angular::{circumcircle, classify, PieceKind};
+use splinelab::interp::choice::bound::{
+    circle_bound, convex_hull, sampled_circle_bound, segment_bound, widths,
+};
+use splinelab::interp::choice::symmetry::mirrors;
 use splinelab::interp::choice::{
-    fewest_points, max_distinct_for, Choice, Family, Measure, SearchOptions, Target,
+    fewest_points, max_distinct_for, search, Choice, Family, Measure, Minimality, SearchOptions,
+    Target, MAX_RANDOM_STARTS,
 };
 use splinelab::seeds::seed004::{
     coastline, decimate, evenly_spaced, paper_points, polygonal_a, COAST_STEP, SHAPES, TABLE_I,
@@ -1975,6 +1980,251 @@ fn choice_cases() -> Vec<Case> {
                 Ok(())
             },
         ),
+        risky("choice::search_random_starts_beyond_the_limit", || {
+            let t = ok(rectangle_target(40))?;
+            for random_starts in [MAX_RANDOM_STARTS + 1, usize::MAX] {
+                let o = SearchOptions {
+                    random_starts,
+                    ..options(12)
+                };
+                for family in [Family::Cardinal, Family::BSpline] {
+                    expect_err!(search(&t, family, &o), Error::TooLarge { .. })?;
+                }
+            }
+            Ok(())
+        }),
+        case(
+            "choice::search_random_starts_zero_and_extreme_seeds",
+            || {
+                let t = ok(rectangle_target(40))?;
+                for seed in [0, u64::MAX] {
+                    let o = SearchOptions {
+                        random_starts: 0,
+                        seed,
+                        ..options(12)
+                    };
+                    let a = ok(search(&t, Family::Linear, &o))?;
+                    let b = ok(search(&t, Family::Linear, &o))?;
+                    ensure!(a == b, "two runs differ with seed {seed}");
+                    check_choice(&t, &a.choice)?;
+                }
+                let o = SearchOptions {
+                    random_starts: MAX_RANDOM_STARTS,
+                    seed: u64::MAX,
+                    ..options(8)
+                };
+                let c = ok(search(&t, Family::Linear, &o))?;
+                check_choice(&t, &c.choice)
+            },
+        ),
+        case("choice::search_evidence_is_consistent", || {
+            // both count strategies: attempts in increasing order, every count below the
+            // answer failed, the minimality true to the attempts
+            let t = ok(rectangle_target(40))?;
+            for every_count_below in [true, false] {
+                let o = SearchOptions {
+                    every_count_below,
+                    ..options(12)
+                };
+                for family in [Family::Linear, Family::Cubic] {
+                    let s = ok(search(&t, family, &o))?;
+                    check_choice(&t, &s.choice)?;
+                    let n = s.choice.measure.counted;
+                    ensure!(
+                        s.attempts.windows(2).all(|w| w[0].counted < w[1].counted),
+                        "attempts out of order: {:?}",
+                        s.attempts
+                    );
+                    // (an answer out of the tolerance is the lowest error found, at any count)
+                    let below = s.attempts.iter().filter(|a| a.counted < n);
+                    for a in below.filter(|_| s.choice.within_tolerance) {
+                        ensure!(
+                            !a.within_tolerance,
+                            "{family:?}: {a:?} below the answer {n}"
+                        );
+                    }
+                    match s.minimality {
+                        Minimality::Searched => ensure!(
+                            s.below().is_some_and(|b| !b.within_tolerance),
+                            "{family:?}: searched without the count below"
+                        ),
+                        Minimality::NotMet => ensure!(!s.choice.within_tolerance, "{family:?}"),
+                        _ => {}
+                    }
+                }
+            }
+            Ok(())
+        }),
+        case("choice::search_known_reversed_or_off_the_shape", || {
+            // a known polygon of the rectangle's corners in the opposite direction, and one
+            // whose points are far from the shape: no panic, the answer measured again
+            let t = ok(rectangle_target(40))?;
+            let corners = vec![v2(1.0, 0.5), v2(-1.0, 0.5), v2(-1.0, -0.5), v2(1.0, -0.5)];
+            let mut reversed = corners.clone();
+            reversed.reverse();
+            let far: Vec<Vector2<f64>> = corners.iter().map(|p| p * 1e12).collect();
+            for points in [corners, reversed, far] {
+                let o = SearchOptions {
+                    known: Some(bogus_choice(Method::Linear, points, 5)),
+                    ..options(12)
+                };
+                let s = ok(search(&t, Family::Linear, &o))?;
+                check_choice(&t, &s.choice)?;
+                ensure!(s.choice.within_tolerance, "the corners' polygon is exact");
+            }
+            Ok(())
+        }),
+        case("choice::search_known_cardinal_with_nan_a", || {
+            let t = ok(Target::shape(&Shape::Circle, 256))?;
+            let ring: Vec<Vector2<f64>> = (0..8)
+                .map(|i| {
+                    let a = TAU * i as f64 / 8.0;
+                    v2(a.cos(), a.sin())
+                })
+                .collect();
+            for a in [f64::NAN, f64::INFINITY, -1.0, 0.0] {
+                let o = SearchOptions {
+                    known: Some(bogus_choice(Method::Cardinal { a }, ring.clone(), 11)),
+                    ..options(12)
+                };
+                match search(&t, Family::Cardinal, &o) {
+                    Ok(s) => check_choice(&t, &s.choice)?,
+                    Err(Error::NotPositive { .. } | Error::NonFinite { .. }) => {}
+                    Err(e) => return Err(format!("a = {a}: unexpected {e}")),
+                }
+            }
+            Ok(())
+        }),
+        case(
+            "choice::parameter_at_and_point_at_parameter_non_finite",
+            || {
+                let t = ok(Target::shape(&Shape::Circle, 64))?;
+                for s in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    ensure!(t.parameter_at(s).is_none(), "parameter at {s}");
+                }
+                for s in [0.0, -1e300, 1e300, f64::MAX, 5e-324] {
+                    let u = t.parameter_at(s).ok_or(format!("no parameter at {s:e}"))?;
+                    ensure!(u.is_finite(), "parameter {u} at {s:e}");
+                }
+                for u in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                    ensure!(t.point_at_parameter(u).is_none(), "point at {u}");
+                }
+                for u in [0.0, -1e300, 1e300, f64::MAX] {
+                    let p = t
+                        .point_at_parameter(u)
+                        .ok_or(format!("no point at {u:e}"))?;
+                    ensure!((p.norm() - 1.0).abs() < 1e-9, "{p:?} at {u:e}");
+                }
+                // an open exact shape continued far beyond its domain: finite or None
+                let parabola = ok(Target::shape(&SHAPES[3].1, 64))?;
+                for u in [1e300, -f64::MAX] {
+                    if let Some(p) = parabola.point_at_parameter(u) {
+                        ensure!(finite_vecs(&[p]), "{p:?}");
+                    }
+                }
+                let polyline = ok(rectangle_target(40))?;
+                ensure!(
+                    polyline.parameter_at(0.5).is_none()
+                        && polyline.point_at_parameter(0.5).is_none(),
+                    "a polyline has no parameter of its own"
+                );
+                Ok(())
+            },
+        ),
+        case("choice::bounds_degenerate_inputs", || {
+            ensure!(convex_hull(&[]).is_empty(), "hull of nothing");
+            let one = [v2(1.0, 2.0)];
+            ensure!(convex_hull(&one) == one.to_vec(), "hull of one point");
+            ensure!(widths(&one) == (0.0, 0.0), "widths of one point");
+            let nan = [v2(f64::NAN, 0.0), v2(0.0, f64::INFINITY), v2(1.0, 1.0)];
+            ensure!(
+                convex_hull(&nan) == vec![v2(1.0, 1.0)],
+                "non-finite points dropped"
+            );
+            // collinear points: the hull is the segment, the least width 0
+            let line: Vec<Vector2<f64>> = (0..10).map(|i| v2(i as f64, 2.0 * i as f64)).collect();
+            ensure!(convex_hull(&line).len() == 2, "{:?}", convex_hull(&line));
+            let (least, diameter) = widths(&line);
+            close("collinear diameter", diameter, 9.0 * 5f64.sqrt(), 1e-15)?;
+            ensure!(least == 0.0 && segment_bound(&line) == 0.0, "least {least}");
+            for b in [
+                segment_bound(&[]),
+                circle_bound(&[]),
+                sampled_circle_bound(&[]),
+            ] {
+                ensure!(b == 0.0, "bound of nothing {b}");
+            }
+            Ok(())
+        }),
+        case("choice::bounds_at_every_magnitude", || {
+            // a square of side 2m: least width 2m, diameter 2√2 m, circle bound (√2 − 1) m / 2,
+            // from subnormal m to the coordinate limit
+            for m in [5e-320, 1e-300, 1.0, 1e300, MAX_COORDINATE] {
+                let square = [v2(m, m), v2(-m, m), v2(-m, -m), v2(m, -m)];
+                let (least, diameter) = widths(&square);
+                let rel = if m < 1e-307 { 1e-3 } else { 1e-14 };
+                close("least width", least, 2.0 * m, rel)?;
+                close("diameter", diameter, 2.0 * 2f64.sqrt() * m, rel)?;
+                close("segment bound", segment_bound(&square), m, rel)?;
+                close(
+                    "circle bound",
+                    circle_bound(&square),
+                    0.5 * (2f64.sqrt() - 1.0) * m,
+                    rel.max(1e-13),
+                )?;
+                ensure!(
+                    sampled_circle_bound(&square) < circle_bound(&square),
+                    "the sampled bound is below the exact one"
+                );
+            }
+            // beyond the coordinate limit: no NaN width, no panic
+            let huge = [
+                v2(f64::MAX, f64::MAX),
+                v2(-f64::MAX, 0.0),
+                v2(0.0, -f64::MAX),
+            ];
+            let (least, diameter) = widths(&huge);
+            ensure!(!least.is_nan() && !diameter.is_nan(), "{least} {diameter}");
+            Ok(())
+        }),
+        case("choice::mirrors_are_symmetries_at_every_scale", || {
+            // every mirror found maps the reference onto itself (within a sliver of its
+            // size); a circle has some at every scale, a scalene triangle none
+            for scale in [1e-300, 1.0, 1e300] {
+                let ring: Vec<Vector2<f64>> = (0..=256)
+                    .map(|i| {
+                        let a = TAU * i as f64 / 256.0;
+                        v2(a.cos(), 0.5 * a.sin()) * scale
+                    })
+                    .collect();
+                let t = ok(Target::polyline(&ring, true, 0.01 * scale))?;
+                let found = mirrors(&t);
+                ensure!(
+                    !found.is_empty(),
+                    "no mirror of an ellipse at scale {scale:e}"
+                );
+                let tree = ok(SegmentTree::new(t.reference()))?;
+                for m in &found {
+                    for p in t.reference() {
+                        let q = m.isometry.apply(*p);
+                        ensure!(finite_vecs(&[q]), "{q:?}");
+                        let d = tree.distance(q);
+                        ensure!(
+                            d <= 1e-3 * t.size(),
+                            "scale {scale:e}: {m:?} moves {p:?} by {d:e}"
+                        );
+                    }
+                }
+            }
+            let triangle = [v2(0.0, 0.0), v2(3.0, 0.0), v2(0.7, 1.9), v2(0.0, 0.0)];
+            let t = ok(Target::polyline(&triangle, true, 0.01))?;
+            ensure!(
+                mirrors(&t).is_empty(),
+                "a scalene triangle: {:?}",
+                mirrors(&t)
+            );
+            Ok(())
+        }),
         case("choice::max_distinct_for_small_targets", || {
             let t = ok(Target::polyline(&six_points(1.0), false, 0.1))?;
             ensure!(max_distinct_for(&t) == 64, "{}", max_distinct_for(&t));

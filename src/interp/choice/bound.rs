@@ -11,12 +11,31 @@
 //!   every piece is an arc of the one circle through them).
 //!
 //! The least width of a polygon is attained across an edge of its convex hull, the largest
-//! width is its diameter; both are computed exactly on the hull.
+//! width is its diameter; both are computed exactly on the hull. Products of coordinates are
+//! formed after an exact rescaling by a power of two, so that no input
+//! within [`crate::error::MAX_COORDINATE`] overflows; points with a non-finite coordinate
+//! are left out.
 
 use nalgebra::Vector2;
 
+/// A power of two `2ᵏ` that brings the largest finite coordinate of `points` into
+/// `[½, 1]` (`k` within `±1020`; 1 for no finite non-zero coordinate): products of
+/// rescaled differences cannot overflow, and the rescaling is exact.
+fn unit_scale(points: &[Vector2<f64>]) -> f64 {
+    let m = points
+        .iter()
+        .flat_map(|p| [p.x.abs(), p.y.abs()])
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    if m == 0.0 {
+        return 1.0;
+    }
+    let k = (-m.log2().ceil()).clamp(-1020.0, 1020.0);
+    2f64.powi(k as i32)
+}
+
 /// The convex hull of `points` (Andrew's monotone chain), counter-clockwise, without
-/// repeated or collinear vertices.
+/// repeated or collinear vertices; points with a non-finite coordinate are left out.
 pub fn convex_hull(points: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
     let mut p: Vec<Vector2<f64>> = points
         .iter()
@@ -28,8 +47,10 @@ pub fn convex_hull(points: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
     if p.len() < 3 {
         return p;
     }
+    let k = unit_scale(&p);
     let cross = |o: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>| {
-        (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
+        let (u, v) = (a * k - o * k, b * k - o * k);
+        u.x * v.y - u.y * v.x
     };
     // the lower chain left to right, then the upper chain right to left
     let mut hull: Vec<Vector2<f64>> = Vec::with_capacity(2 * p.len());
@@ -58,6 +79,9 @@ pub fn widths(points: &[Vector2<f64>]) -> (f64, f64) {
     if n < 2 {
         return (0.0, 0.0);
     }
+    // rescaled exactly: the products below cannot overflow (module docs)
+    let k = unit_scale(&hull);
+    let hull: Vec<Vector2<f64>> = hull.iter().map(|p| p * k).collect();
     let mut diameter: f64 = 0.0;
     for (i, a) in hull.iter().enumerate() {
         for b in &hull[i + 1..] {
@@ -66,7 +90,7 @@ pub fn widths(points: &[Vector2<f64>]) -> (f64, f64) {
         }
     }
     if n < 3 {
-        return (0.0, diameter);
+        return (0.0, diameter / k);
     }
     let mut least = f64::INFINITY;
     for i in 0..n {
@@ -82,7 +106,7 @@ pub fn widths(points: &[Vector2<f64>]) -> (f64, f64) {
             .fold(0.0, f64::max);
         least = least.min(far);
     }
-    (least, diameter)
+    (least / k, diameter / k)
 }
 
 /// The least error of any straight segment against `reference`: `w_min / 2`.

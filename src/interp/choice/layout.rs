@@ -169,7 +169,7 @@ impl Layout {
 
     /// The variables of a plain layout for the positions `s` (all the points on the shape, in
     /// order), with the guides `guides` and the cardinal `a` appended.
-    fn variables(&self, s: &[f64], guides: &[Vector2<f64>], a: f64) -> Vec<f64> {
+    pub fn variables(&self, s: &[f64], guides: &[Vector2<f64>], a: f64) -> Vec<f64> {
         let mut x: Vec<f64> = if self.closed {
             s.to_vec()
         } else {

@@ -25,6 +25,9 @@
 //!    on the shape beyond the ends, one parameter step beyond (the exact shape continued), and
 //!    the chord continued. The cubic spline is searched with each end condition (relaxed,
 //!    cyclic, anticyclic) as one pool, the cardinal `a` set on a grid for each start.
+//!    *Pruned* starts: the configuration within the tolerance with the fewest
+//!    points found so far (or the given one), its points taken off one at a time, each time
+//!    the one whose removal raises the error least; the three best last removals are starts.
 //!    Known exact configurations lie in this space: a cardinal spline with `a = ½` and points
 //!    at equal parameter steps reproduces a quadratic (a parabola from 2 points and 2
 //!    guides), a closed Angular spline through 3 points of a circle is the circle, an
@@ -32,17 +35,20 @@
 //! 2. *Error equidistribution* (plain layouts): the largest distance `eⱼ` of the reference
 //!    between points `j` and `j + 1` to the curve is taken as `cⱼ Δⱼᵖ` (`Δⱼ` the arc between
 //!    them, `p = 2`), and the arcs are rescaled to `Δⱼ ∝ cⱼ^{−1/p}` (damped, a few rounds).
-//! 3. *Compass search* from the best start of each family, then the next best, up to
-//!    [`POLISHED_STARTS`], on every coordinate (positions, guides, `a`): steps `±h` accepted
-//!    when they lower the error, `h` halved when no step does, within an evaluation budget
+//! 3. *Compass search* from the best start of each family (and cubic end condition), then
+//!    the next best, up to [`POLISHED_STARTS`] per end condition, on every coordinate
+//!    (positions, guides, `a`): steps `±h` accepted when they lower the error, `h` halved
+//!    when no step does, within an evaluation budget
 //!    ([`SearchOptions::budget_per_coordinate`]), until one meets the tolerance.
 //!
 //! **Count.** An upper count is the given configuration's ([`SearchOptions::known`]) or the
 //! first count from the method's minimum where a start (step 1) meets the tolerance. With
-//! [`SearchOptions::every_count_below`] every count from the minimum up is then searched with
-//! the full budget (steps 1–3) and the first that succeeds is the answer: the assumption "a
-//! count that fails means the lower counts fail" is not made. Without it the counts are
-//! bisected and the count one below the answer searched in full. [`search`] reports, beside
+//! [`SearchOptions::every_count_below`] the counts below it are searched down, one by one,
+//! while the full search (steps 1–3) succeeds; then every count from the minimum up to the
+//! first failure is searched with the full budget, and the lowest success is the answer: the
+//! assumption "a count that fails means the lower counts fail" is not made. Without it the
+//! counts are galloped down and bisected, and the count one below the answer searched in
+//! full. [`search`] reports, beside
 //! the choice, every count searched and its best error ([`Search::attempts`]), and whether
 //! the count is provably minimal ([`Minimality`]): the method's own minimum, or a lower bound
 //! on the error of everything one point fewer can draw ([`bound`]). Otherwise a count is the
@@ -59,6 +65,7 @@ pub mod bound;
 mod bspline;
 mod layout;
 mod local;
+mod prune;
 pub mod symmetry;
 mod target;
 
@@ -67,10 +74,11 @@ pub use target::{Target, CORNER_TURN};
 
 use crate::curve_metrics::{Distances, Smoothness};
 use crate::error::{Error, Result};
-use crate::interp::methods::Method;
+use crate::interp::methods::{CubicEnd, Method};
 use layout::{candidates, Candidate};
 use local::{compass, equidistribute, finish, tune_parameter};
 use nalgebra::Vector2;
+use prune::{pruned_starts, Seed};
 
 /// Samples per piece for the accepted error (spec decision A19: at least 256).
 pub const FINAL_SAMPLES: usize = 256;
@@ -85,8 +93,9 @@ pub const GOAL: f64 = 0.9;
 /// [`SearchOptions::budget_per_coordinate`] asks.
 pub const MAX_EVALUATIONS: usize = 100_000;
 
-/// How many starts the compass search polishes per count, one after the other until one
-/// meets the tolerance: the best of each start family first.
+/// How many starts the compass search polishes per count and layout variant (a cubic end
+/// condition), one after the other until one meets the tolerance: the best of each start
+/// family and variant first.
 pub const POLISHED_STARTS: usize = 5;
 
 /// The highest B-spline order tried.
@@ -147,11 +156,14 @@ pub enum Start {
     Known,
     /// A least-squares fit (B-splines).
     Fit,
+    /// A configuration with more points that meets the tolerance, points taken off
+    /// (module docs, step 1).
+    Pruned,
 }
 
 impl Start {
     /// `arc length`, `turning`, `shape parameter`, `corners`, `symmetric`, `random`,
-    /// `given`, `least-squares fit`.
+    /// `given`, `least-squares fit`, `pruned`.
     pub fn label(self) -> &'static str {
         match self {
             Start::ArcLength => "arc length",
@@ -162,6 +174,7 @@ impl Start {
             Start::Random => "random",
             Start::Known => "given",
             Start::Fit => "least-squares fit",
+            Start::Pruned => "pruned",
         }
     }
 }
@@ -205,6 +218,9 @@ pub const SEED: u64 = 0x5EED_0004_1986;
 /// Random starts per layout and count by default.
 pub const RANDOM_STARTS: usize = 8;
 
+/// The most random starts per layout and count a search accepts.
+pub const MAX_RANDOM_STARTS: usize = 1024;
+
 /// How far the search goes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SearchOptions {
@@ -217,7 +233,8 @@ pub struct SearchOptions {
     /// A configuration known to meet the tolerance: the search starts below its count and
     /// returns it if it finds nothing with fewer points.
     pub known: Option<Choice>,
-    /// Random starts per layout and count (module docs, step 1).
+    /// Random starts per layout and count (module docs, step 1), at most
+    /// [`MAX_RANDOM_STARTS`].
     pub random_starts: usize,
     /// The seed of the random starts.
     pub seed: u64,
@@ -339,13 +356,21 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
 /// paper counts them: repeats and guides included).
 ///
 /// # Errors
-/// [`Error::TooLarge`] for a `max_points` beyond [`crate::error::MAX_ELEMENTS`];
+/// [`Error::TooLarge`] for a `max_points` beyond [`crate::error::MAX_ELEMENTS`] or
+/// `random_starts` beyond [`MAX_RANDOM_STARTS`];
 /// [`Error::TooFewPoints`] for a `max_points` below the family's fewest on this target;
 /// [`Error::Degenerate`] if no configuration tried is valid (an Angular spline on a polygon
 /// whose every placement has collinear triples, say); the errors of [`Target::measure`] on
 /// the returned configuration.
 pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Result<Search> {
     crate::error::size("maximum point count", options.max_points)?;
+    if options.random_starts > MAX_RANDOM_STARTS {
+        return Err(Error::TooLarge {
+            what: "random starts per layout of the search",
+            got: options.random_starts,
+            max: MAX_RANDOM_STARTS,
+        });
+    }
     let closed = target.is_closed();
     let min = fewest_counted(family, closed);
     if options.max_points < min {
@@ -365,6 +390,11 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
     // `max_points`
     let max = distinct_of(family, closed, options.max_points).min(max_distinct_for(target));
     let known = checked_known(target, options)?;
+    // the configuration within the tolerance with the fewest points so far, in the search's
+    // variables: the pruned starts of lower counts come from it
+    let mut seed: Option<Seed> = known
+        .as_ref()
+        .and_then(|k| Seed::of_choice(target, family, k));
     let mut found: Option<(usize, Choice)> =
         known.map(|k| (distinct_of(family, closed, k.measure.counted), k));
     // 1. an upper count: the known one, or the first where a start meets the tolerance
@@ -379,28 +409,52 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
             if e.is_finite() && nearest.is_none_or(|(b, _)| e < b) {
                 nearest = Some((e, n));
             }
-            if let Some(best) = best {
+            if let Some((best, s)) = best {
                 found = Some((n, best));
+                seed = s;
                 break;
             }
         }
     }
     let top = found.as_ref().map_or(max + 1, |f| f.0);
-    // 2. the counts below it, each with the full budget
+    // 2. the counts below it, each with the full budget (and the starts pruned from the
+    // fewest points found so far)
     let mut attempts: Vec<(usize, Attempt, Option<Choice>)> = Vec::new();
     type Tried = Vec<(usize, Attempt, Option<Choice>)>;
-    let full =
-        |n: usize, evaluations: &mut usize, attempts: &mut Tried| -> Result<Option<Choice>> {
-            let (attempt, best, evals) = full_search(target, family, n, options)?;
-            *evaluations += evals;
-            let success = best.as_ref().filter(|c| c.within_tolerance).cloned();
-            attempts.push((n, attempt, best));
-            Ok(success)
-        };
+    let full = |n: usize,
+                seed: &mut Option<Seed>,
+                evaluations: &mut usize,
+                attempts: &mut Tried|
+     -> Result<Option<Choice>> {
+        let (attempt, best, evals) = full_search(target, family, n, options, seed.as_ref())?;
+        *evaluations += evals;
+        let success = best
+            .as_ref()
+            .filter(|c| c.0.within_tolerance)
+            .map(|c| c.0.clone());
+        if let Some((_, s)) = best.as_ref().filter(|c| c.0.within_tolerance) {
+            *seed = s.clone().or(seed.take());
+        }
+        attempts.push((n, attempt, best.map(|b| b.0)));
+        Ok(success)
+    };
     if options.every_count_below {
-        for n in min..top {
-            if let Some(c) = full(n, &mut evaluations, &mut attempts)? {
-                found = Some((n, c));
+        // down from the upper count while the full search succeeds (each count pruned from
+        // the one above), then every lower count from the method's minimum up
+        let mut n = top;
+        while n > min {
+            match full(n - 1, &mut seed, &mut evaluations, &mut attempts)? {
+                Some(c) => {
+                    n -= 1;
+                    found = Some((n, c));
+                }
+                None => break,
+            }
+        }
+        let failed = n.saturating_sub(1);
+        for m in min..failed {
+            if let Some(c) = full(m, &mut seed, &mut evaluations, &mut attempts)? {
+                found = Some((m, c));
                 break;
             }
         }
@@ -415,7 +469,7 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
             } else {
                 bad + (ok - bad) / 2
             };
-            match full(n, &mut evaluations, &mut attempts)? {
+            match full(n, &mut seed, &mut evaluations, &mut attempts)? {
                 Some(c) => {
                     ok = n;
                     found = Some((n, c));
@@ -430,7 +484,7 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
     }
     if found.is_none() && attempts.iter().all(|a| a.2.is_none()) {
         if let Some((_, n)) = nearest.filter(|&(_, n)| attempts.iter().all(|a| a.0 != n)) {
-            full(n, &mut evaluations, &mut attempts)?;
+            full(n, &mut seed, &mut evaluations, &mut attempts)?;
         }
     }
     attempts.sort_by_key(|a| a.0);
@@ -492,15 +546,19 @@ fn lower_bound(target: &Target, family: Family, below: usize) -> Option<Minimali
     })
 }
 
+/// A configuration with its seed for the pruned starts of lower counts.
+type Seeded = (Choice, Option<Seed>);
+
 /// The first look at `n` points (the rise to an upper count): the starts with the cardinal
 /// `a` tuned, the best measured densely if its coarse error is within the tolerance; the
-/// configuration if it meets the tolerance, the best coarse error, and the evaluations made.
+/// configuration (with its seed) if it meets the tolerance, the best coarse error, and the
+/// evaluations made.
 fn first_look(
     target: &Target,
     family: Family,
     n: usize,
     options: &SearchOptions,
-) -> Result<(Option<Choice>, f64, usize)> {
+) -> Result<(Option<Seeded>, f64, usize)> {
     let mut scratch = Scratch::default();
     let mut evaluations = 0;
     let mut best: Option<(f64, Candidate)> = None;
@@ -513,7 +571,9 @@ fn first_look(
     }
     match best {
         Some((e, (layout, x, start))) if e <= target.tolerance() => Ok((
-            finish(target, &layout, &x, start)?.filter(|c| c.within_tolerance),
+            finish(target, &layout, &x, start)?
+                .filter(|c| c.within_tolerance)
+                .map(|c| (c, Seed::of_layout(target, &layout, &x))),
             e,
             evaluations,
         )),
@@ -522,17 +582,24 @@ fn first_look(
     }
 }
 
-/// The full search for `n` distinct points (steps 1–3 of the module docs): the attempt, the
-/// best configuration found, and the evaluations made.
+/// The full search for `n` distinct points (steps 1–3 of the module docs), with the starts
+/// pruned `from` a configuration with more points: the attempt, the best configuration found
+/// (with its seed), and the evaluations made.
 fn full_search(
     target: &Target,
     family: Family,
     n: usize,
     options: &SearchOptions,
-) -> Result<(Attempt, Option<Choice>, usize)> {
+    from: Option<&Seed>,
+) -> Result<(Attempt, Option<Seeded>, usize)> {
     let mut scratch = Scratch::default();
     let mut evaluations = 0;
-    let all = candidates(target, family, n, options.random_starts, options.seed);
+    let mut all = candidates(target, family, n, options.random_starts, options.seed);
+    if let Some(seed) = from {
+        let (pruned, evals) = pruned_starts(target, family, seed, n, &mut scratch);
+        evaluations += evals;
+        all.extend(pruned);
+    }
     let starts = all.len();
     let mut pool: Vec<(f64, Candidate)> = Vec::with_capacity(starts);
     for (layout, x, start) in all {
@@ -544,21 +611,26 @@ fn full_search(
             pool.push((e, (layout, x, start)));
         }
     }
-    // the best of each start family first (by error), then the rest by error
+    // the best of each start family for each layout variant (cubic end condition) first, by
+    // error, then the rest by error; POLISHED_STARTS polished per variant
     pool.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut order: Vec<usize> = Vec::new();
-    let mut seen: Vec<Start> = Vec::new();
-    for (i, (_, (_, _, start))) in pool.iter().enumerate() {
-        if !seen.contains(start) {
-            seen.push(*start);
+    let mut seen: Vec<(CubicEnd, Start)> = Vec::new();
+    for (i, (_, (layout, _, start))) in pool.iter().enumerate() {
+        if !seen.contains(&(layout.end, *start)) {
+            seen.push((layout.end, *start));
             order.push(i);
         }
     }
-    order.sort_by(|&i, &j| pool[i].0.total_cmp(&pool[j].0));
     let rest: Vec<usize> = (0..pool.len()).filter(|i| !order.contains(i)).collect();
     order.extend(rest);
-    let mut best: Option<Choice> = None;
-    for &i in order.iter().take(POLISHED_STARTS) {
+    let variants = CubicEnd::ALL
+        .iter()
+        .filter(|&&end| seen.iter().any(|s| s.0 == end))
+        .count();
+    let polished = POLISHED_STARTS.saturating_mul(variants.max(1));
+    let mut best: Option<Seeded> = None;
+    for &i in order.iter().take(polished) {
         let (e, (layout, x, start)) = &pool[i];
         let budget = options
             .budget_per_coordinate
@@ -567,19 +639,19 @@ fn full_search(
         let (x, _, evals) = compass(target, layout, x.clone(), *e, budget, &mut scratch);
         evaluations += evals;
         if let Some(c) = finish(target, layout, &x, *start)? {
-            if better(&c, best.as_ref()) {
-                best = Some(c);
+            if better(&c, best.as_ref().map(|b| &b.0)) {
+                best = Some((c, Seed::of_layout(target, layout, &x)));
             }
         }
-        if best.as_ref().is_some_and(|b| b.within_tolerance) {
+        if best.as_ref().is_some_and(|b| b.0.within_tolerance) {
             break;
         }
     }
     let attempt = Attempt {
         counted: counted_of(family, target.is_closed(), n),
-        best_error: best.as_ref().map(|b| b.measure.distances.hausdorff()),
+        best_error: best.as_ref().map(|b| b.0.measure.distances.hausdorff()),
         starts,
-        within_tolerance: best.as_ref().is_some_and(|b| b.within_tolerance),
+        within_tolerance: best.as_ref().is_some_and(|b| b.0.within_tolerance),
     };
     Ok((attempt, best, evaluations))
 }

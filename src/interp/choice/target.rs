@@ -5,7 +5,7 @@ use super::symmetry::{mirrors, Mirror};
 use super::{Measure, Scratch, FINAL_SAMPLES, SEARCH_SAMPLES};
 use crate::curve::ParametricCurve;
 use crate::curve_metrics::{
-    curvature_profile, distances_to, sample_pieces_into, smoothness, SegmentTree,
+    curvature_profile, distances_to, sample_pieces_into, segment_distance, smoothness, SegmentTree,
 };
 use crate::error::{Error, Result};
 use crate::interp::methods::Method;
@@ -184,7 +184,9 @@ impl Target {
     }
 
     /// The point at arc length `s` (module docs): on a closed target `s` wraps around, on an
-    /// open one it extrapolates beyond the ends.
+    /// open one it extrapolates beyond the ends. It is finite for every finite `s` on a
+    /// closed target; on an open one, or for a NaN `s`, it can be non-finite: check `s`
+    /// first.
     pub fn point(&self, s: f64) -> Vector2<f64> {
         let (i, f) = self.locate(s);
         match &self.exact {
@@ -211,18 +213,48 @@ impl Target {
         (i, if s1 > s0 { (s - s0) / (s1 - s0) } else { 0.0 })
     }
 
-    /// The shape's own parameter at arc `s`, when the target is an exact shape.
+    /// The arc position of the reference point nearest to `p` (on a closed target in
+    /// `[0, L]`).
+    pub(super) fn arc_of(&self, p: Vector2<f64>) -> f64 {
+        let points = self.reference();
+        let nearest = (0..points.len() - 1).min_by(|&i, &j| {
+            let d = |k: usize| segment_distance(p, points[k], points[k + 1]);
+            d(i).total_cmp(&d(j))
+        });
+        let Some(i) = nearest else {
+            return 0.0;
+        };
+        let (a, b) = (points[i], points[i + 1]);
+        let t = (p - a).dot(&(b - a)) / (b - a).norm_squared();
+        let t = if t.is_finite() {
+            t.clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        self.arc[i] + t * (self.arc[i + 1] - self.arc[i])
+    }
+
+    /// The shape's own parameter at arc `s`, when the target is an exact shape; `None`
+    /// otherwise, or if `s` or the parameter is not finite.
     pub fn parameter_at(&self, s: f64) -> Option<f64> {
+        if !s.is_finite() {
+            return None;
+        }
         let (i, f) = self.locate(s);
         self.exact
             .as_ref()
             .map(|(_, t)| t[i] + (t[i + 1] - t[i]) * f)
+            .filter(|t| t.is_finite())
     }
 
     /// The exact shape's point at its parameter `t` (beyond its domain: the formula
-    /// continued), when the target is an exact shape.
+    /// continued), when the target is an exact shape; `None` otherwise, or if the point is
+    /// not finite.
     pub fn point_at_parameter(&self, t: f64) -> Option<Vector2<f64>> {
-        self.exact.as_ref().map(|(shape, _)| shape.point(t))
+        self.exact
+            .as_ref()
+            .map(|(shape, _)| shape.point(t))
+            .filter(|p| p.x.is_finite() && p.y.is_finite())
     }
 
     /// The weight `w(s) ∈ [0, 1]` on `[0, L]` whose equal steps place points (module docs,
