@@ -13,6 +13,13 @@ median is reported, with the ratio scipy / splinelab (above 1: splinelab is fast
 | bspline-curve        | BSpline(t, c, 3)(ts): 60 control points in 3-D, 1e6 parameters |
 | bspline-curve-deg5   | the same at degree 5                                           |
 | bspline-curve-deg7   | the same at degree 7                                           |
+| bspline-curve-spans  | BSpline(t, c, 3)(ts): 10⁶ spans (10⁶ + 3 points in 3-D)        |
+
+With `--sweep`, every pair is timed at every size of its workload's sweep (`splinelab bench
+--sizes`: the evaluation points, the data points of a build), both sides alternating at each
+size; the results go to out/tables/bench-peers-sweep.csv (`splinelab::report::bench::
+PEER_HEADER`) and `splinelab bench --sweep --peers` then draws fig-bench-scaling with a panel
+of scipy's time over ours against size.
 
 The inputs are built the same way on both sides (see src/report/bench.rs). What each side
 does differs as each library is used: splinelab's batch evaluations write into an output
@@ -22,7 +29,7 @@ paths of issue 13); scipy allocates a new output array each call and runs on one
 and scipy into the notebooks' virtual environment ($SPLINELAB_STATE/venv, default
 ~/.cache/splinelab/venv) if they are missing; builds splinelab with `cargo build --release`.
 
-usage: python3 scripts/bench_peers.py [--millis N] [--rounds R] [--only WORKLOAD ...]
+usage: python3 scripts/bench_peers.py [--millis N] [--rounds R] [--only WORKLOAD ...] [--sweep]
 """
 import json
 import os
@@ -41,7 +48,18 @@ PAIRS = [
     "bspline-curve",
     "bspline-curve-deg5",
     "bspline-curve-deg7",
+    "bspline-curve-spans",
 ]
+# the default size of each workload (src/report/bench.rs), for the runs without --sweep
+DEFAULT_SIZE = {
+    "cubic-spline-build": 1_000_000,
+    "cubic-spline-refit": 1_000_000,
+    "cubic-spline-eval": 10_000_000,
+    "bspline-curve": 1_000_000,
+    "bspline-curve-deg5": 1_000_000,
+    "bspline-curve-deg7": 1_000_000,
+    "bspline-curve-spans": 1_000_000,
+}
 
 
 def venv_python():
@@ -63,29 +81,35 @@ SCIPY_SIDE = r"""
 import json, statistics, sys, time
 import numpy as np, scipy
 from scipy.interpolate import BSpline, CubicSpline
-workload, millis = sys.argv[1], float(sys.argv[2])
+workload, millis, size = sys.argv[1], float(sys.argv[2]), int(sys.argv[3])
 
-def helix_curve(p):
-    n = 60
+def helix_curve(p, n):
     a = 0.4 * np.arange(n)
     c = np.stack([np.cos(a), np.sin(a), 0.05 * np.arange(n)], axis=1)
     interior = np.arange(1, n - p) / (n - p)
     t = np.concatenate([np.zeros(p + 1), interior, np.ones(p + 1)])
-    return BSpline(t, c, p), np.linspace(0.0, 1.0, 1_000_000)
+    return BSpline(t, c, p)
 
-x = np.linspace(0.0, 1000.0, 1_000_000)
-y = np.sin(x)
 if workload in ("cubic-spline-build", "cubic-spline-refit"):
+    x = np.linspace(0.0, 1000.0, size)
+    y = np.sin(x)
     run = lambda: CubicSpline(x, y, bc_type="natural")
     points = x.size
 elif workload == "cubic-spline-eval":
-    cs = CubicSpline(x, y, bc_type="natural")
-    xs = np.linspace(0.0, 1000.0, 10_000_000)
+    x = np.linspace(0.0, 1000.0, 1_000_000)
+    cs = CubicSpline(x, np.sin(x), bc_type="natural")
+    xs = np.linspace(0.0, 1000.0, size)
     run = lambda: cs(xs)
     points = xs.size
+elif workload == "bspline-curve-spans":
+    curve = helix_curve(3, 1_000_003)
+    ts = np.linspace(0.0, 1.0, size)
+    run = lambda: curve(ts)
+    points = ts.size
 else:
     p = {"bspline-curve": 3, "bspline-curve-deg5": 5, "bspline-curve-deg7": 7}[workload]
-    curve, ts = helix_curve(p)
+    curve = helix_curve(p, 60)
+    ts = np.linspace(0.0, 1.0, size)
     run = lambda: curve(ts)
     points = ts.size
 run()
@@ -100,40 +124,71 @@ print(json.dumps({"workload": "scipy:" + workload, "points": points,
 """
 
 
+def pair(binary, python, workload, size, millis, rounds):
+    """Both sides at one size in alternating rounds: the medians and the rounds."""
+    ours, theirs = [], []
+    for _ in range(rounds):
+        line = subprocess.run(
+            [str(binary), "bench", "--only", workload, "--size", str(size), "--millis", millis],
+            cwd=ROOT, check=True, capture_output=True, text=True,
+        ).stdout.strip().splitlines()[-1]
+        ours.append(json.loads(line))
+        line = subprocess.run(
+            [str(python), "-c", SCIPY_SIDE, workload, millis, str(size)],
+            check=True, capture_output=True, text=True,
+        ).stdout.strip()
+        theirs.append(json.loads(line))
+    a = statistics.median(r["seconds"] for r in ours)
+    b = statistics.median(r["seconds"] for r in theirs)
+    return {
+        "workload": workload,
+        "size": size,
+        "points": ours[0]["points"],
+        "splinelab_seconds": a,
+        "scipy_seconds": b,
+        "ratio_scipy_over_splinelab": b / a,
+        "rounds_splinelab": [r["seconds"] for r in ours],
+        "rounds_scipy": [r["seconds"] for r in theirs],
+        "scipy": theirs[0]["scipy"],
+        "numpy": theirs[0]["numpy"],
+    }
+
+
 def main():
     args = sys.argv[1:]
     millis = args[args.index("--millis") + 1] if "--millis" in args else "1000"
     rounds = int(args[args.index("--rounds") + 1]) if "--rounds" in args else 3
     only = [args[i + 1] for i, a in enumerate(args) if a == "--only"] or PAIRS
+    sweep = "--sweep" in args
     python = venv_python()
     subprocess.run(["cargo", "build", "--release", "--quiet"], cwd=ROOT, check=True)
     binary = ROOT / "target" / "release" / "splinelab"
+    if not sweep:
+        for workload in only:
+            print(json.dumps(pair(binary, python, workload, DEFAULT_SIZE[workload], millis, rounds)),
+                  flush=True)
+        return
+    listed = subprocess.run([str(binary), "bench", "--sizes"], cwd=ROOT, check=True,
+                            capture_output=True, text=True).stdout.splitlines()
+    sizes = {line.split()[0]: [int(v) for v in line.split()[1:]] for line in listed if line.strip()}
+    rows = []
     for workload in only:
-        ours, theirs = [], []
-        for _ in range(rounds):
-            line = subprocess.run(
-                [str(binary), "bench", "--only", workload, "--millis", millis],
-                cwd=ROOT, check=True, capture_output=True, text=True,
-            ).stdout.strip().splitlines()[-1]
-            ours.append(json.loads(line))
-            line = subprocess.run(
-                [str(python), "-c", SCIPY_SIDE, workload, millis],
-                check=True, capture_output=True, text=True,
-            ).stdout.strip()
-            theirs.append(json.loads(line))
-        a = statistics.median(r["seconds"] for r in ours)
-        b = statistics.median(r["seconds"] for r in theirs)
-        print(json.dumps({
-            "workload": workload,
-            "points": ours[0]["points"],
-            "splinelab_seconds": a,
-            "scipy_seconds": b,
-            "ratio_scipy_over_splinelab": b / a,
-            "rounds_splinelab": [r["seconds"] for r in ours],
-            "rounds_scipy": [r["seconds"] for r in theirs],
-            "scipy": theirs[0]["scipy"],
-            "numpy": theirs[0]["numpy"],
-        }), flush=True)
+        for size in sizes[workload]:
+            r = pair(binary, python, workload, size, millis, rounds)
+            print(json.dumps(r), flush=True)
+            rows.append(r)
+    tables = ROOT / "out" / "tables"
+    tables.mkdir(parents=True, exist_ok=True)
+    csv = tables / "bench-peers-sweep.csv"
+    tmp = csv.with_suffix(".csv.tmp")
+    tmp.write_text("workload,size,splinelab_seconds,peer_seconds,peer\n" + "".join(
+        f"{r['workload']},{r['size']},{r['splinelab_seconds']!r},{r['scipy_seconds']!r},scipy\n"
+        for r in rows))
+    tmp.replace(csv)
+    print(f"wrote {csv}", flush=True)
+    # the throughput sweep of every workload, with the ratio panel from these rows
+    subprocess.run([str(binary), "bench", "--sweep", "--millis", str(max(200, int(millis) // 2)),
+                    "--peers", str(csv), "--out", str(ROOT / "out")], cwd=ROOT, check=True)
 
 
 if __name__ == "__main__":

@@ -296,6 +296,57 @@ pub(crate) fn locate(nodes: &[f64], x: f64) -> usize {
     inner.partition_point(|&node| node <= x)
 }
 
+/// [`locate`] started from the interval `hint` (any index; clamped): the same interval, found
+/// by galloping from `hint` ([`partition_point_from`]), so a query `d` intervals away costs
+/// `O(log d)` comparisons near the previous one instead of a search of the whole partition —
+/// the batch paths' search for sorted queries.
+pub(crate) fn locate_from(nodes: &[f64], hint: usize, x: f64) -> usize {
+    let inner = &nodes[1..nodes.len() - 1];
+    partition_point_from(inner, hint, |node| node <= x)
+}
+
+/// `slice.partition_point(pred)` for a predicate true on a prefix and false after it, found
+/// by galloping (exponential search) from `hint` — steps 1, 2, 4, … away from it in the
+/// direction the predicate says, then a binary search of the last step. The same index as
+/// `partition_point`, for every monotone `pred` and every `hint` (beyond the slice: its end).
+pub(crate) fn partition_point_from(
+    slice: &[f64],
+    hint: usize,
+    pred: impl Fn(f64) -> bool,
+) -> usize {
+    let len = slice.len();
+    let h = hint.min(len);
+    // every index below `lo` is true, every index from `hi` on false
+    let (lo, hi) = if h < len && pred(slice[h]) {
+        let (mut lo, mut step) = (h + 1, 1usize);
+        loop {
+            let j = lo.saturating_add(step - 1);
+            if j >= len {
+                break (lo, len);
+            }
+            if !pred(slice[j]) {
+                break (lo, j);
+            }
+            lo = j + 1;
+            step = step.saturating_mul(2);
+        }
+    } else {
+        let (mut hi, mut step) = (h, 1usize);
+        loop {
+            if hi < step {
+                break (0, hi);
+            }
+            let j = hi - step;
+            if pred(slice[j]) {
+                break (j + 1, hi);
+            }
+            hi = j;
+            step = step.saturating_mul(2);
+        }
+    };
+    lo + slice[lo..hi].partition_point(|&v| pred(v))
+}
+
 /// The one rule for nodes (partition nodes, interpolation abscissae, parameters): finite and
 /// strictly increasing, every gap at least `f64::MIN_POSITIVE` and the whole width finite;
 /// returns the widest gap `max (xᵢ₊₁ − xᵢ)` (0 below two values).
@@ -375,6 +426,38 @@ pub(crate) fn check_domain(what: &'static str, x: f64, (a, b): (f64, f64)) -> Re
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The galloping search is `partition_point`, exhaustively: every slice length to 40
+    /// (with repeated values), every hint (beyond the end too), every query between, on and
+    /// around the values, infinities and NaN; and `locate_from` is `locate`.
+    #[test]
+    fn galloping_search_is_partition_point() {
+        for len in 0..=40usize {
+            let slice: Vec<f64> = (0..len).map(|i| (i / 3) as f64).collect();
+            let mut queries: Vec<f64> = (0..=2 * len + 2).map(|i| i as f64 / 6.0 - 0.5).collect();
+            queries.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -0.0]);
+            for &x in &queries {
+                for pred in [&(|v: f64| v <= x) as &dyn Fn(f64) -> bool, &|v: f64| v < x] {
+                    let want = slice.partition_point(|&v| pred(v));
+                    for hint in 0..=len + 3 {
+                        assert_eq!(
+                            partition_point_from(&slice, hint, pred),
+                            want,
+                            "len {len}, hint {hint}, x {x}"
+                        );
+                    }
+                }
+            }
+            if len >= 2 {
+                let nodes: Vec<f64> = (0..len).map(|i| i as f64 * 0.5).collect();
+                for &x in &queries {
+                    for hint in 0..len + 2 {
+                        assert_eq!(locate_from(&nodes, hint, x), locate(&nodes, x));
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn linspace_includes_both_ends() {

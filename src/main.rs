@@ -52,6 +52,17 @@ enum Command {
         /// Output folder of the sweep's figure and its JSON lines.
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// Run the workloads at this size instead of their default (one of their sweep's
+        /// sizes or any other they take).
+        #[arg(long, value_name = "N", conflicts_with = "sweep")]
+        size: Option<usize>,
+        /// Print each workload's sweep sizes (`id size size …`) and exit.
+        #[arg(long)]
+        sizes: bool,
+        /// With `--sweep`: a peer comparison's CSV (`scripts/bench_peers.py --sweep` writes
+        /// `out/tables/bench-peers-sweep.csv`), drawn as a panel of the peer's time over ours.
+        #[arg(long, value_name = "FILE", requires = "sweep")]
+        peers: Option<PathBuf>,
     },
     /// Print the formula corpus (surfaces, curves, bases, a patch: their traced formulas,
     /// which is the derivative of which, and reference values), one JSON object per line,
@@ -84,7 +95,20 @@ fn say(line: impl std::fmt::Display) -> anyhow::Result<()> {
 /// `bench --sweep`: every workload of `ids` over its sizes (fixed studies skipped), the JSON
 /// lines printed as they come and written to `out/tables/bench-sweep.jsonl`, and the figure
 /// `fig-bench-scaling` to `out/figures/`.
-fn sweep_all(ids: &[String], budget: Duration, out: &std::path::Path) -> anyhow::Result<()> {
+fn sweep_all(
+    ids: &[String],
+    budget: Duration,
+    out: &std::path::Path,
+    peers: Option<&std::path::Path>,
+) -> anyhow::Result<()> {
+    let peers = match peers {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            bench::parse_peers(&path.display().to_string(), &text)?
+        }
+        None => Vec::new(),
+    };
     let mut all = Vec::new();
     for id in ids {
         let results = bench::sweep(id, budget, |r| {
@@ -106,7 +130,7 @@ fn sweep_all(ids: &[String], budget: Duration, out: &std::path::Path) -> anyhow:
         std::thread::available_parallelism().map_or(1, |n| n.get()),
         std::env::consts::ARCH
     );
-    let figure = bench::scaling_figure(&all, &machine);
+    let figure = bench::scaling_figure(&all, &peers, &machine);
     for path in figure.save(&out.join("figures"), "fig-bench-scaling")? {
         say(format_args!("wrote {}", path.display()))?;
     }
@@ -126,11 +150,21 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         list,
         sweep,
         out,
+        size,
+        sizes,
+        peers,
     }) = cli.command
     {
         if list {
             for w in &bench::WORKLOADS {
                 say(format_args!("{:<24} {}", w.id, w.description))?;
+            }
+            return Ok(());
+        }
+        if sizes {
+            for w in &bench::WORKLOADS {
+                let s: Vec<String> = w.sweep.iter().map(|n| n.to_string()).collect();
+                say(format_args!("{} {}", w.id, s.join(" ")))?;
             }
             return Ok(());
         }
@@ -141,10 +175,13 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         };
         let budget = Duration::from_millis(millis);
         if sweep {
-            return sweep_all(&ids, budget, &out);
+            return sweep_all(&ids, budget, &out, peers.as_deref());
         }
         for id in ids {
-            let r = bench::run(&id, budget)?;
+            let r = match size {
+                Some(n) => bench::run_sized(bench::workload(&id)?, n, budget)?,
+                None => bench::run(&id, budget)?,
+            };
             say(r.to_json())?;
         }
         return Ok(());

@@ -6,6 +6,17 @@ fn splinelab() -> Command {
     Command::new(env!("CARGO_BIN_EXE_splinelab"))
 }
 
+/// Runs `splinelab ARGS`, asserts it succeeded, and returns its standard output.
+fn stdout_of(args: &[&str]) -> String {
+    let out = splinelab().args(args).output().expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
 /// Runs `splinelab --only ID --out DIR` and asserts it succeeded.
 fn regenerate_only(id: &str, dir: &std::path::Path) {
     let out = splinelab()
@@ -76,16 +87,7 @@ fn unknown_id_fails_readably() {
 
 #[test]
 fn bench_prints_json_lines() {
-    let out = splinelab()
-        .args(["bench", "--only", "patch-matrix", "--millis", "1"])
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let line = String::from_utf8_lossy(&out.stdout);
+    let line = stdout_of(&["bench", "--only", "patch-matrix", "--millis", "1"]);
     for key in [
         "\"workload\": \"patch-matrix\"",
         "\"points\": 225",
@@ -134,6 +136,69 @@ fn bench_sweep_prints_sizes_and_draws_the_scaling_figure() {
         let f = dir.path().join(format!("figures/fig-bench-scaling.{ext}"));
         assert!(std::fs::metadata(&f).expect("figure").len() > 1000, "{f:?}");
     }
+}
+
+/// Issue 26: one workload at a chosen size, the sweep sizes listed, and a peer CSV drawn as
+/// the ratio panel (a malformed one refused with its line).
+#[test]
+fn bench_at_a_size_lists_sizes_and_draws_peers() {
+    let text = stdout_of(&[
+        "bench",
+        "--only",
+        "patch-matrix",
+        "--size",
+        "8",
+        "--millis",
+        "1",
+    ]);
+    assert!(
+        text.contains("\"size\": 8,") && text.contains("\"points\": 64,"),
+        "{text}"
+    );
+    let text = stdout_of(&["bench", "--sizes"]);
+    assert!(
+        text.lines()
+            .any(|l| l == "patch-matrix 4 8 15 32 64 128 256 512 1024"),
+        "{text}"
+    );
+    let dir = tempfile::tempdir().expect("tempdir");
+    let peers = dir.path().join("peers.csv");
+    std::fs::write(
+        &peers,
+        "workload,size,splinelab_seconds,peer_seconds,peer\npatch-matrix,4,1e-6,3e-6,scipy\npatch-matrix,8,2e-6,3e-6,scipy\n",
+    )
+    .expect("write");
+    let sweep = || {
+        splinelab()
+            .args([
+                "bench",
+                "--sweep",
+                "--only",
+                "patch-matrix",
+                "--millis",
+                "1",
+                "--peers",
+            ])
+            .arg(&peers)
+            .arg("--out")
+            .arg(dir.path())
+            .output()
+            .expect("runs")
+    };
+    let out = sweep();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let svg =
+        std::fs::read_to_string(dir.path().join("figures/fig-bench-scaling.svg")).expect("svg");
+    assert!(svg.contains("parity") && svg.contains("patch-matrix (scipy)"));
+    std::fs::write(&peers, "workload,size\n").expect("write");
+    let out = sweep();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 1"), "{err}");
 }
 
 #[test]

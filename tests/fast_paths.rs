@@ -62,6 +62,20 @@ fn knots(p: usize, interior: usize, rng: &mut Rng) -> Vec<f64> {
     k
 }
 
+/// Random knots of degree `p` ([`knots`]), their basis and a control polygon in the plane.
+fn plane_curve(
+    p: usize,
+    interior: usize,
+    rng: &mut Rng,
+) -> (Vec<f64>, BSplineBasis, Vec<Vector2<f64>>) {
+    let k = knots(p, interior, rng);
+    let basis = BSplineBasis::try_new(KnotVector::try_new(k.clone()).unwrap(), p).unwrap();
+    let points = (0..basis.len())
+        .map(|_| Vector2::new(rng.next() - 0.5, rng.next()))
+        .collect();
+    (k, basis, points)
+}
+
 /// Parameters across the domain: many sorted ones (crossing the threading threshold when
 /// `n` is large), every knot and its neighbours, the ends.
 fn params(k: &[f64], n: usize, shuffle: bool, rng: &mut Rng) -> Vec<f64> {
@@ -69,15 +83,20 @@ fn params(k: &[f64], n: usize, shuffle: bool, rng: &mut Rng) -> Vec<f64> {
     for &x in k {
         ts.extend([x, x.next_up().min(1.0), x.next_down().max(0.0)]);
     }
+    order(&mut ts, shuffle, rng);
+    ts
+}
+
+/// Shuffles `v` (Fisher–Yates from `rng`) or sorts it.
+fn order(v: &mut [f64], shuffle: bool, rng: &mut Rng) {
     if shuffle {
-        for i in (1..ts.len()).rev() {
+        for i in (1..v.len()).rev() {
             let j = (rng.next() * (i + 1) as f64) as usize;
-            ts.swap(i, j.min(i));
+            v.swap(i, j.min(i));
         }
     } else {
-        ts.sort_by(f64::total_cmp);
+        v.sort_by(f64::total_cmp);
     }
-    ts
 }
 
 fn check_batch<const N: usize>(
@@ -143,11 +162,7 @@ proptest! {
     #[test]
     fn nurbs_batch_equals_pointwise(seed in any::<u64>(), p in 1usize..=8, interior in 0usize..=20, big in prop::bool::weighted(0.2), shuffle in any::<bool>(), wild in prop::bool::weighted(0.3)) {
         let mut rng = Rng(seed | 1);
-        let k = knots(p, interior, &mut rng);
-        let basis = BSplineBasis::try_new(KnotVector::try_new(k.clone()).unwrap(), p).unwrap();
-        let points: Vec<Vector2<f64>> = (0..basis.len())
-            .map(|_| Vector2::new(rng.next() - 0.5, rng.next()))
-            .collect();
+        let (k, basis, points) = plane_curve(p, interior, &mut rng);
         let weights: Vec<f64> = (0..basis.len())
             .map(|_| if wild { 10f64.powf(7.0 * rng.next() - 1.0) } else { 0.2 + 4.8 * rng.next() })
             .collect();
@@ -408,5 +423,72 @@ fn outside_the_domain_the_batch_is_the_single_evaluation() {
                 "NURBS at {t}"
             );
         }
+    }
+}
+
+/// Queries for a partition of `nodes` (issue 26): sorted with a stride that skips `skip`
+/// intervals between neighbours (the galloping search's case), shuffled, and the domain's
+/// ends, points outside and beyond, and non-finite values mixed in.
+fn strided_queries(nodes: &[f64], skip: usize, shuffle: bool, rng: &mut Rng) -> Vec<f64> {
+    let (a, b) = (nodes[0], nodes[nodes.len() - 1]);
+    let mut xs: Vec<f64> = nodes
+        .windows(2)
+        .step_by(skip.max(1))
+        .map(|w| w[0] + (w[1] - w[0]) * rng.next())
+        .collect();
+    xs.extend([a, b, a.next_down(), b.next_up(), a - 1e3, b + 1e3]);
+    xs.extend(nodes.iter().step_by(skip.max(1)).copied());
+    order(&mut xs, shuffle, rng);
+    xs
+}
+
+proptest! {
+    #![proptest_config(config(12))]
+
+    /// The cubic spline's batch at queries that skip intervals (the galloping cursor), in any
+    /// order, outside the domain and at non-finite points: the single evaluation, bit for bit
+    /// (one formula, the same interval).
+    #[test]
+    fn cubic_spline_batch_skipping_intervals_is_the_single_evaluation(seed in any::<u64>(), n in prop_oneof![2 => 3usize..=50, 1 => Just(5_000usize), 1 => Just(120_000usize)], skip in prop_oneof![Just(1usize), Just(3usize), Just(97usize), Just(4_099usize)], shuffle in any::<bool>()) {
+        let mut rng = Rng(seed | 1);
+        let mut x = vec![0.0];
+        for _ in 1..n {
+            let last = x[x.len() - 1];
+            x.push(last + 0.01 + rng.next());
+        }
+        let y: Vec<f64> = x.iter().map(|v| (0.3 * v).sin()).collect();
+        let spline = CubicSpline::function(&x, &y, EndCondition::Natural).unwrap();
+        let mut xs = strided_queries(&x, skip, shuffle, &mut rng);
+        xs.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, x[n / 2]]);
+        let mut out = vec![7.0; 3];
+        spline.values_into(&xs, &mut out);
+        prop_assert_eq!(out.len(), xs.len());
+        for (&q, &v) in xs.iter().zip(&out) {
+            let r = spline.value(q);
+            prop_assert!(v.to_bits() == r.to_bits() || (v.is_nan() && r.is_nan()), "at {:e}: batch {:e}, single {:e}", q, v, r);
+        }
+    }
+
+    /// B-spline and NURBS curves with many spans (up to 40 000) at parameters that skip
+    /// spans, sorted or shuffled, repeated knots included: batch = pointwise within the
+    /// batch accuracy, and the span the batch walks is `find_span`'s.
+    #[test]
+    fn bspline_batch_skipping_spans_equals_pointwise(seed in any::<u64>(), p in 1usize..=5, interior in prop_oneof![Just(200usize), Just(40_000usize)], skip in prop_oneof![Just(1usize), Just(13usize), Just(1_001usize)], shuffle in any::<bool>()) {
+        let mut rng = Rng(seed | 1);
+        let (k, basis, points) = plane_curve(p, interior, &mut rng);
+        let weights: Vec<f64> = (0..basis.len()).map(|_| 0.5 + rng.next()).collect();
+        let curve = BSplineCurve::try_new(basis.clone(), points.clone()).unwrap();
+        let nurbs = NurbsCurve::try_new(basis.clone(), points, weights).unwrap();
+        let distinct: Vec<f64> = {
+            let mut d = k[p..k.len() - p].to_vec();
+            d.dedup();
+            d
+        };
+        let ts = strided_queries(&distinct, skip, shuffle, &mut rng);
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        curve.eval_many(&ts, &mut a);
+        nurbs.eval_many(&ts, &mut b);
+        check_batch("B-spline", &ts, &a, |t| curve.point(t), tol_batch(p))?;
+        check_batch("NURBS", &ts, &b, |t| nurbs.point(t), 2.0 * tol_batch(p))?;
     }
 }

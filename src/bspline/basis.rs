@@ -122,18 +122,38 @@ impl BSplineBasis {
     /// span with `t_ℓ < b` (the left limit, see [`BSplineBasis`]); below `a` the first
     /// non-empty span. Evaluation outside `[a, b]` extrapolates that span's polynomial.
     pub fn find_span(&self, t: f64) -> usize {
+        self.span_by(t, None)
+    }
+
+    /// [`BSplineBasis::find_span`] searched from the span `hint` (any index): the same span,
+    /// found by galloping from `hint` ([`crate::domain::partition_point_from`]), so sorted
+    /// parameters that skip spans cost `O(log d)` comparisons near the previous span.
+    pub(crate) fn find_span_near(&self, hint: usize, t: f64) -> usize {
+        self.span_by(t, Some(hint.saturating_sub(self.degree)))
+    }
+
+    /// [`BSplineBasis::find_span`], its searches of the interior knots `t_{p+1} … t_n` binary,
+    /// or galloping from index `from` of them.
+    #[inline]
+    fn span_by(&self, t: f64, from: Option<usize>) -> usize {
+        fn search(knots: &[f64], from: Option<usize>, pred: impl Fn(f64) -> bool) -> usize {
+            match from {
+                None => knots.partition_point(|&x| pred(x)),
+                Some(h) => crate::domain::partition_point_from(knots, h, pred),
+            }
+        }
         let k = self.knots.knots();
         let p = self.degree;
         let n = self.len() - 1;
         let b = k[n + 1];
         if t >= b {
             // the last ℓ ≤ n with t_ℓ < b (ℓ = p qualifies: t_p = a < b), so t_{ℓ+1} ≥ b > t_ℓ
-            return p + k[p + 1..=n].partition_point(|&x| x < b);
+            return p + search(&k[p + 1..=n], from, |x| x < b);
         }
         // the last ℓ in [p, n] with t_ℓ ≤ t: t_{ℓ+1} > t ≥ t_ℓ, a non-empty span, unless t is
         // below the domain and the first span is empty (a = t_p = t_{p+1}): then the first
         // non-empty one
-        let span = p + k[p + 1..=n].partition_point(|&x| x <= t);
+        let span = p + search(&k[p + 1..=n], from, |x| x <= t);
         (span..=n).find(|&s| k[s] < k[s + 1]).unwrap_or(span)
     }
 

@@ -254,8 +254,9 @@ fn fallback<T>(direct: &impl Fn(usize, f64) -> T, span: usize, t: f64) -> T {
     direct(span, t)
 }
 
-/// Walks a sequence of parameters span by span: each search starts from the previous span, so
-/// sorted parameters cost one or two comparisons each; any order stays correct.
+/// Walks a sequence of parameters span by span: each search gallops from the previous span
+/// ([`BSplineBasis::find_span_near`]), so sorted parameters cost one or two comparisons each,
+/// or `O(log d)` when they skip `d` spans; any order stays correct.
 struct SpanCursor<'a> {
     basis: &'a BSplineBasis,
     span: usize,
@@ -305,7 +306,7 @@ impl<'a> SpanCursor<'a> {
         if self.lo <= t && t < self.hi {
             return false;
         }
-        let span = self.basis.find_span(t);
+        let span = self.basis.find_span_near(self.span, t);
         let changed = span != self.span;
         if changed {
             self.enter(span);

@@ -99,9 +99,12 @@ pub(crate) fn check_sites(what: &'static str, x: &[f64]) -> Result<()> {
     crate::domain::check_nodes(what, x).map(|_| ())
 }
 
-/// Finds the interval `[xᵢ, xᵢ₊₁)` of a sequence of points, starting at the previous one, so
-/// sorted input costs a comparison or two per point; any order stays correct. The right end
-/// belongs to the last interval; points outside go to the nearest end interval.
+/// Finds the interval `[xᵢ, xᵢ₊₁)` of a sequence of points, starting at the previous one
+/// ([`crate::domain::locate_from`]): sorted input costs a comparison or two per point when
+/// consecutive points share or neighbour an interval, and `O(log d)` comparisons near the
+/// previous interval when they lie `d` intervals apart; any order stays correct. The right end
+/// belongs to the last interval; points outside go to the nearest end interval, NaN to the
+/// first (as [`crate::domain::locate`]).
 pub(crate) struct IntervalCursor<'a> {
     nodes: &'a [f64],
     i: usize,
@@ -116,16 +119,7 @@ impl<'a> IntervalCursor<'a> {
     /// The interval index of `x`.
     #[inline]
     pub(crate) fn find(&mut self, x: f64) -> usize {
-        let last = self.nodes.len() - 2;
-        let i = self.i;
-        let in_current = (i == 0 || self.nodes[i] <= x) && (i == last || x < self.nodes[i + 1]);
-        if !in_current {
-            if i < last && self.nodes[i + 1] <= x && (i + 1 == last || x < self.nodes[i + 2]) {
-                self.i = i + 1;
-            } else {
-                self.i = crate::domain::locate(self.nodes, x);
-            }
-        }
+        self.i = crate::domain::locate_from(self.nodes, self.i, x);
         self.i
     }
 }

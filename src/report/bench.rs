@@ -54,6 +54,80 @@ impl BenchResult {
     }
 }
 
+/// One size of a comparison with a peer library, both sides timed in alternating rounds
+/// (`scripts/bench_peers.py --sweep`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PeerPoint {
+    /// Our workload id.
+    pub workload: String,
+    /// Its size parameter.
+    pub size: usize,
+    /// Our median seconds per run.
+    pub ours: f64,
+    /// The peer's median seconds per run.
+    pub peer: f64,
+    /// The peer (`scipy`, say).
+    pub peer_name: String,
+}
+
+impl PeerPoint {
+    /// The peer's time over ours: above 1 we are faster.
+    pub fn ratio(&self) -> f64 {
+        self.peer / self.ours
+    }
+}
+
+/// The header of a peer comparison's CSV ([`parse_peers`]).
+pub const PEER_HEADER: &str = "workload,size,splinelab_seconds,peer_seconds,peer";
+
+/// Parses a peer comparison's CSV (header [`PEER_HEADER`], one size per line), as
+/// `scripts/bench_peers.py --sweep` writes it.
+///
+/// # Errors
+/// [`crate::report::Error::Parse`] for a missing or different header, a line without five
+/// fields, a size that is not a count, or a time that is not finite and positive.
+pub fn parse_peers(what: &str, text: &str) -> crate::report::Result<Vec<PeerPoint>> {
+    let bad = |line: usize, message: String| crate::report::Error::Parse {
+        what: what.to_string(),
+        line,
+        message,
+    };
+    let mut lines = text.lines().enumerate();
+    match lines.next() {
+        Some((_, h)) if h.trim() == PEER_HEADER => {}
+        Some((_, h)) => return Err(bad(1, format!("header {h:?}, expected {PEER_HEADER:?}"))),
+        None => return Err(bad(1, "empty: no header".into())),
+    }
+    let mut out = Vec::new();
+    for (i, line) in lines {
+        let n = i + 1;
+        if line.trim().is_empty() {
+            continue;
+        }
+        let f: Vec<&str> = line.split(',').map(str::trim).collect();
+        let [workload, size, ours, peer, name] = f[..] else {
+            return Err(bad(n, format!("{} fields, expected 5", f.len())));
+        };
+        let size: usize = size
+            .parse()
+            .map_err(|_| bad(n, format!("size {size:?} is not a count")))?;
+        let time = |v: &str| -> crate::report::Result<f64> {
+            match v.parse::<f64>() {
+                Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+                _ => Err(bad(n, format!("time {v:?} is not finite and positive"))),
+            }
+        };
+        out.push(PeerPoint {
+            workload: workload.to_string(),
+            size,
+            ours: time(ours)?,
+            peer: time(peer)?,
+            peer_name: name.to_string(),
+        });
+    }
+    Ok(out)
+}
+
 /// One prepared run of a workload: inputs and output buffers built, so that timing it
 /// measures the work alone. Returns the number of points produced.
 pub type Runner = Box<dyn FnMut() -> Result<usize>>;
@@ -187,22 +261,29 @@ const ANGULAR_POINTS: usize = 1000;
 /// Data points of the spline of `cubic-spline-eval`.
 const SPLINE_POINTS: usize = 1_000_000;
 
-/// The helix-like polygon of the B-spline workloads: degree `p`, clamped knots with uniform
-/// interior.
-fn helix(p: usize) -> Result<BSplineCurve<3>> {
-    let points: Vec<Vector3<f64>> = (0..BSPLINE_POINTS)
+/// Spans of the `bspline-curve-spans` workload's curve.
+const MANY_SPANS: usize = 1_000_000;
+
+/// The helix-like polygon of the B-spline workloads: degree `p`, `n` control points, clamped
+/// knots with uniform interior.
+fn helix(p: usize, n: usize) -> Result<BSplineCurve<3>> {
+    let points: Vec<Vector3<f64>> = (0..n)
         .map(|i| {
             let a = 0.4 * i as f64;
             Vector3::new(a.cos(), a.sin(), 0.05 * i as f64)
         })
         .collect();
-    let knots = KnotVector::open_uniform(p, BSPLINE_POINTS, 0.0, 1.0)?;
+    let knots = KnotVector::open_uniform(p, n, 0.0, 1.0)?;
     BSplineCurve::try_new(BSplineBasis::try_new(knots, p)?, points)
 }
 
 fn bspline_curve_of_degree(p: usize, k: usize) -> Result<Runner> {
+    bspline_curve_with(p, BSPLINE_POINTS, k)
+}
+
+fn bspline_curve_with(p: usize, n: usize, k: usize) -> Result<Runner> {
     crate::error::samples("bench size", k)?;
-    let curve = helix(p)?;
+    let curve = helix(p, n)?;
     let params = linspace(0.0, 1.0, k);
     let mut out = Vec::new();
     Ok(Box::new(move || {
@@ -221,6 +302,10 @@ fn bspline_curve_deg5(k: usize) -> Result<Runner> {
 
 fn bspline_curve_deg7(k: usize) -> Result<Runner> {
     bspline_curve_of_degree(7, k)
+}
+
+fn bspline_curve_spans(k: usize) -> Result<Runner> {
+    bspline_curve_with(3, MANY_SPANS + 3, k)
 }
 
 /// `k` points `x` equally spaced in `[0, 1000]` with `y = sin x`.
@@ -331,7 +416,7 @@ fn symbolic_torus(_: usize) -> Result<Runner> {
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 18] = [
+pub const WORKLOADS: [Workload; 19] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
@@ -411,6 +496,14 @@ pub const WORKLOADS: [Workload; 18] = [
         size: 1_000_000,
         sweep: POINT_SWEEP,
         setup: bspline_curve_deg7,
+    },
+    Workload {
+        id: "bspline-curve-spans",
+        description: "cubic B-spline with 10⁶ spans (10⁶ + 3 control points in 3-D, 24 MB; clamped uniform knots) at k sorted parameters (default 1e6): each parameter in its own span up to 10⁶",
+        unit: "parameters",
+        size: 1_000_000,
+        sweep: POINT_SWEEP,
+        setup: bspline_curve_spans,
     },
     Workload {
         id: "cubic-spline-build",
@@ -558,8 +651,10 @@ pub fn sweep(
 /// log-log, one line per workload of `results` (a [`sweep`] of each), in two panels — curves
 /// and splines, surfaces and studies. A flat line is a cost proportional to the size; a line
 /// that rises at small sizes is paying a fixed cost per run (setup, threads), one that falls
-/// at large sizes has left the caches for main memory.
-pub fn scaling_figure(results: &[BenchResult], machine: &str) -> Figure {
+/// at large sizes has left the caches for main memory. With `peers` ([`parse_peers`]) a third
+/// panel draws each compared workload's peer time over ours against size, parity (1) dashed:
+/// where a line falls to it, the lead is gone.
+pub fn scaling_figure(results: &[BenchResult], peers: &[PeerPoint], machine: &str) -> Figure {
     use crate::report::plot2d::{Figure2d, Series, Style};
     use crate::report::style::LINE_PALETTE;
     let mut ids: Vec<&str> = Vec::new();
@@ -632,12 +727,56 @@ pub fn scaling_figure(results: &[BenchResult], machine: &str) -> Figure {
         }
         panels.push(panel);
     }
+    if !peers.is_empty() {
+        panels.push(peer_panel(peers));
+    }
+    let columns = panels.len();
     Figure::from(Figure2d::new(
         format!("Throughput against size, each workload swept ({machine})"),
         panels,
-        (1, 2),
+        (1, columns),
     ))
-    .with_size(1600, 800)
+    .with_size(800 * columns as u32, 800)
+}
+
+/// The panel of peer time over ours against size (see [`scaling_figure`]).
+fn peer_panel(peers: &[PeerPoint]) -> crate::report::plot2d::Panel {
+    use crate::report::plot2d::{Panel, Series, Style};
+    use crate::report::style::LINE_PALETTE;
+    let mut ids: Vec<(&str, &str)> = Vec::new();
+    for p in peers {
+        if !ids.contains(&(p.workload.as_str(), p.peer_name.as_str())) {
+            ids.push((p.workload.as_str(), p.peer_name.as_str()));
+        }
+    }
+    let mut panel = Panel::new(
+        "peer time ÷ splinelab time (above 1: splinelab faster)",
+        "size (points per run)",
+        "ratio",
+    )
+    .log(true, true)
+    .legend_at(plotters::prelude::SeriesLabelPosition::UpperLeft);
+    let sizes = peers.iter().map(|p| p.size as f64);
+    let (lo, hi) = sizes.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
+        (lo.min(x), hi.max(x))
+    });
+    for (k, (id, peer)) in ids.iter().enumerate() {
+        let points: Vec<(f64, f64)> = peers
+            .iter()
+            .filter(|p| p.workload == *id && p.peer_name == *peer)
+            .map(|p| (p.size as f64, p.ratio()))
+            .collect();
+        let color = LINE_PALETTE[k % LINE_PALETTE.len()];
+        panel = panel.with(
+            Series::line(format!("{id} ({peer})"), points, color).styled(Style::LinePoints(4)),
+        );
+    }
+    if lo < hi {
+        let grey = plotters::style::RGBColor(110, 110, 110);
+        panel = panel
+            .with(Series::line("parity", vec![(lo, 1.0), (hi, 1.0)], grey).styled(Style::Dashed));
+    }
+    panel
 }
 
 #[cfg(test)]
@@ -678,7 +817,35 @@ mod tests {
                 })
             })
             .collect();
-        let svg = scaling_figure(&results, "test").to_svg().expect("svg");
+        let svg = scaling_figure(&results, &[], "test").to_svg().expect("svg");
         assert!(svg.contains("bspline-curve") && svg.contains("torus-grid"));
+        let text = format!("{PEER_HEADER}\ncubic-spline-eval,1000,1e-5,3e-5,scipy\ncubic-spline-eval,10000,1e-4,2e-4,scipy\n");
+        let peers = parse_peers("peers", &text).expect("parses");
+        assert_eq!(peers.len(), 2);
+        assert!((peers[0].ratio() - 3.0).abs() < 1e-12);
+        let svg = scaling_figure(&results, &peers, "test")
+            .to_svg()
+            .expect("svg");
+        assert!(svg.contains("parity") && svg.contains("cubic-spline-eval (scipy)"));
+    }
+
+    /// A peer CSV that is not one: typed errors naming the line.
+    #[test]
+    fn bad_peer_files_name_the_line() {
+        let bad: Vec<(String, usize)> = vec![
+            (String::new(), 1),
+            ("workload,size\n".into(), 1),
+            (format!("{PEER_HEADER}\nx,1,1e-3\n"), 2),
+            (format!("{PEER_HEADER}\nx,-1,1e-3,1e-3,scipy\n"), 2),
+            (format!("{PEER_HEADER}\n\nx,10,NaN,1e-3,scipy\n"), 3),
+            (format!("{PEER_HEADER}\nx,10,1e-3,0,scipy\n"), 2),
+            (format!("{PEER_HEADER}\nx,10,1e-3,inf,scipy\n"), 2),
+        ];
+        for (text, line) in bad {
+            match parse_peers("peers", &text) {
+                Err(crate::report::Error::Parse { line: l, .. }) => assert_eq!(l, line, "{text:?}"),
+                other => panic!("{text:?}: {other:?}"),
+            }
+        }
     }
 }

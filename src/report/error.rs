@@ -45,6 +45,16 @@ pub enum Error {
         /// What polars said.
         message: String,
     },
+    /// A text input (a data file, a peer's timings) could not be read: where and why.
+    #[error("{what}, line {line}: {message}")]
+    Parse {
+        /// The input.
+        what: String,
+        /// The line at fault (1-based).
+        line: usize,
+        /// What is wrong with it.
+        message: String,
+    },
 }
 
 impl std::fmt::Debug for Error {
