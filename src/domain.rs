@@ -305,6 +305,41 @@ pub(crate) fn locate_from(nodes: &[f64], hint: usize, x: f64) -> usize {
     partition_point_from(inner, hint, |node| node <= x)
 }
 
+/// A guess of the index of `x` in a partition of `[lo, hi]` into `count` parts, as if they
+/// were equal: `⌊(x − lo) / (hi − lo) · count⌋`, clamped to `0 … count − 1` (NaN: 0). The
+/// batch cursors gallop from it when it proved near on the previous query: a query then
+/// costs a few comparisons near one place whatever the previous query was, and consecutive
+/// queries' memory accesses do not wait for each other (the search from the previous
+/// interval makes each query's loads depend on the last one's result).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct UniformGuess {
+    lo: f64,
+    scale: f64,
+    last: usize,
+}
+
+impl UniformGuess {
+    /// The guess for `count ≥ 1` parts of `[lo, hi]` (a zero or non-finite scale guesses 0).
+    pub(crate) fn new(lo: f64, hi: f64, count: usize) -> Self {
+        let scale = count as f64 / (hi - lo);
+        UniformGuess {
+            lo,
+            scale: if scale.is_finite() { scale } else { 0.0 },
+            last: count.saturating_sub(1),
+        }
+    }
+
+    /// The guessed index of `x`.
+    #[inline]
+    pub(crate) fn of(&self, x: f64) -> usize {
+        // `as` saturates: negative and NaN give 0, huge values usize::MAX
+        (((x - self.lo) * self.scale) as usize).min(self.last)
+    }
+}
+
+/// How far (in intervals) the guess may miss and still be trusted for the next query.
+pub(crate) const GUESS_SLACK: usize = 2;
+
 /// `slice.partition_point(pred)` for a predicate true on a prefix and false after it, found
 /// by galloping (exponential search) from `hint` — steps 1, 2, 4, … away from it in the
 /// direction the predicate says, then a binary search of the last step. The same index as

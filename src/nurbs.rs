@@ -164,9 +164,8 @@ impl<const N: usize> NurbsCurve<N> {
         span: usize,
         t: D,
     ) -> (SVector<D, N>, D) {
-        let mut n = vec![D::zero(); self.basis.degree() + 1];
-        self.basis.nonzero_into(span, t, &mut n);
-        self.homogeneous(span, &n)
+        self.basis
+            .with_nonzero(span, t, |n| self.homogeneous(span, n))
     }
 
     /// The perspective projection `X / W` of a homogeneous point; `W > 0` since the weights

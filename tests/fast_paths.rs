@@ -445,16 +445,20 @@ fn strided_queries(nodes: &[f64], skip: usize, shuffle: bool, rng: &mut Rng) -> 
 proptest! {
     #![proptest_config(config(12))]
 
-    /// The cubic spline's batch at queries that skip intervals (the galloping cursor), in any
-    /// order, outside the domain and at non-finite points: the single evaluation, bit for bit
-    /// (one formula, the same interval).
+    /// The cubic spline's batch at queries that skip intervals (the galloping cursor, from the
+    /// uniform guess or the previous interval), in any order, on nearly uniform nodes and on
+    /// gaps over six decades, outside the domain and at non-finite points: the single
+    /// evaluation, bit for bit (one formula, the same interval).
     #[test]
-    fn cubic_spline_batch_skipping_intervals_is_the_single_evaluation(seed in any::<u64>(), n in prop_oneof![2 => 3usize..=50, 1 => Just(5_000usize), 1 => Just(120_000usize)], skip in prop_oneof![Just(1usize), Just(3usize), Just(97usize), Just(4_099usize)], shuffle in any::<bool>()) {
+    fn cubic_spline_batch_skipping_intervals_is_the_single_evaluation(seed in any::<u64>(), n in prop_oneof![2 => 3usize..=50, 1 => Just(5_000usize), 1 => Just(120_000usize)], skip in prop_oneof![Just(1usize), Just(3usize), Just(97usize), Just(4_099usize)], shuffle in any::<bool>(), wild in any::<bool>()) {
         let mut rng = Rng(seed | 1);
         let mut x = vec![0.0];
         for _ in 1..n {
+            // gaps over six decades (`wild`): the uniform guess misses, the cursor falls back
+            // to the previous interval
             let last = x[x.len() - 1];
-            x.push(last + 0.01 + rng.next());
+            let spread = if wild { 10f64.powf(6.0 * rng.next()) } else { 1.0 };
+            x.push(last + (0.01 + rng.next()) * spread);
         }
         let y: Vec<f64> = x.iter().map(|v| (0.3 * v).sin()).collect();
         let spline = CubicSpline::function(&x, &y, EndCondition::Natural).unwrap();

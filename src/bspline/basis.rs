@@ -247,6 +247,28 @@ impl BSplineBasis {
         }
     }
 
+    /// `f` of the `p + 1` basis values on `span` at `t` ([`BSplineBasis::nonzero_into`]),
+    /// kept on the stack up to degree 7: the point-by-point paths allocate nothing there.
+    #[inline]
+    pub(crate) fn with_nonzero<D: DualNum<Primitive = f64> + Copy, R>(
+        &self,
+        span: usize,
+        t: D,
+        f: impl FnOnce(&[D]) -> R,
+    ) -> R {
+        const STACK: usize = 8;
+        let len = self.degree + 1;
+        if len <= STACK {
+            let mut n = [D::zero(); STACK];
+            self.nonzero_into(span, t, &mut n[..len]);
+            f(&n[..len])
+        } else {
+            let mut n = vec![D::zero(); len];
+            self.nonzero_into(span, t, &mut n);
+            f(&n)
+        }
+    }
+
     /// The `p + 1` basis functions that may be non-zero on span `span`,
     /// `N_{span−p,p}(t), …, N_{span,p}(t)`, written into `out`.
     ///
@@ -574,6 +596,36 @@ fn triangle<D: DualNum<Primitive = f64> + Copy>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The galloping span search is `find_span`, from every hint, at every knot, between
+    /// knots, outside the domain and at NaN, on knots with repeats and empty spans.
+    #[test]
+    fn find_span_near_is_find_span_from_every_hint() {
+        for p in 0..=3usize {
+            let mut k = vec![0.0; p + 1];
+            k.extend([0.5, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 3.0, 3.5]);
+            k.extend(vec![4.0; p + 1]);
+            let Ok(knots) = KnotVector::try_new(k.clone()) else {
+                continue;
+            };
+            let Ok(basis) = BSplineBasis::try_new(knots, p) else {
+                continue;
+            };
+            let mut ts: Vec<f64> = (-4..=36).map(|i| i as f64 * 0.125).collect();
+            ts.extend(k.iter().flat_map(|&x| [x, x.next_up(), x.next_down()]));
+            ts.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY]);
+            for &t in &ts {
+                let want = basis.find_span(t);
+                for hint in 0..k.len() + 3 {
+                    assert_eq!(
+                        basis.find_span_near(hint, t),
+                        want,
+                        "p {p}, t {t}, hint {hint}"
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn spans_are_never_empty() {

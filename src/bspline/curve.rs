@@ -96,9 +96,7 @@ impl<const N: usize> BSplineCurve<N> {
 
     /// `C(t)` on span `span` (its polynomial, extended beyond the span), any number type.
     fn eval_on_span<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, t: D) -> SVector<D, N> {
-        let mut n = vec![D::zero(); self.basis.degree() + 1];
-        self.basis.nonzero_into(span, t, &mut n);
-        self.combine(span, &n)
+        self.basis.with_nonzero(span, t, |n| self.combine(span, n))
     }
 
     /// Evaluates at every parameter of `ts` into `out` (replacing its contents), by the same formula as
@@ -119,8 +117,9 @@ impl<const N: usize> BSplineCurve<N> {
     /// `1.4e-13 · max ‖Pᵢ‖` at degree 3, `2.6e-13` at degree 7); elsewhere (wild control points at high degree,
     /// overflowing coefficients) the span is evaluated point by point as
     /// [`ParametricCurve::eval`] does. Above degree 32 no power form is made (see
-    /// `horner::MAX_POWER_DEGREE`). A span's form is made each time the parameters enter it,
-    /// so unsorted parameters at a high degree cost a form per point (sort them first).
+    /// `horner::MAX_POWER_DEGREE`). A span's form is made each time at least four parameters
+    /// in a row fall in it; sparse or unsorted parameters are evaluated point by point (the
+    /// basis on the stack, no allocation).
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
         horner::by_degree!(self.basis.degree(), [N], self.eval_many_with(ts, out))
     }
@@ -175,10 +174,15 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
 /// costs more than it saves).
 pub(crate) const EVAL_PARALLEL_MIN: usize = 1 << 16;
 
+/// The fewest parameters in a span for which [`walk_spans`] forms the span's fast form;
+/// shorter runs (sparse or unsorted parameters) are evaluated point by point, which costs
+/// less than a form (its blossoming and power conversion are `O(p²)` per coordinate).
+pub(crate) const FORM_MIN_RUN: usize = 4;
+
 /// Evaluates a piecewise-polynomial object on a B-spline basis at every parameter of `ts`
 /// into `out` (resized to `ts.len()`, former contents overwritten; `zero` fills new slots
-/// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of
-/// parameters in it, and `at(piece, (t − t_ℓ)/w)` evaluates each
+/// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of at least
+/// [`FORM_MIN_RUN`] parameters in it (shorter runs are evaluated by `direct`), and `at(piece, (t − t_ℓ)/w)` evaluates each
 /// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
 /// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters the two halves of `ts` are
 /// walked on two threads; a span's data depend on the span alone, so the values are the
@@ -208,13 +212,11 @@ fn walk_part<T, P>(
 ) {
     let mut cursor = SpanCursor::new(basis);
     let mut data = None;
-    let mut formed = false;
+    // the span whose fast form `data` holds (formed lazily: only for runs long enough)
+    let mut formed: Option<usize> = None;
     let mut i = 0;
     while i < ts.len() {
-        if cursor.advance(ts[i]) || !formed {
-            data = piece(cursor.span());
-            formed = true;
-        }
+        cursor.advance(ts[i]);
         // the run of parameters that stay in this span (at least ts[i], which may be the
         // right end b or outside the domain), evaluated in one branch-free loop
         let (lo, hi, inv) = (cursor.start(), cursor.hi, cursor.inv_width);
@@ -223,6 +225,19 @@ fn walk_part<T, P>(
             .position(|&t| !(lo <= t && t < hi))
             .unwrap_or(ts.len() - i - 1);
         let (chunk, slots) = (&ts[i..i + run], &mut out[i..i + run]);
+        i += run;
+        if run < FORM_MIN_RUN && formed != Some(cursor.span()) {
+            // a few parameters in a span (sparse or unsorted ones): point by point, the
+            // form would cost more than it saves
+            for (o, &t) in slots.iter_mut().zip(chunk) {
+                *o = fallback(direct, cursor.span(), t);
+            }
+            continue;
+        }
+        if formed != Some(cursor.span()) {
+            data = piece(cursor.span());
+            formed = Some(cursor.span());
+        }
         match &data {
             // only the run's first parameter can lie outside the span (beyond the domain's
             // ends, or its right end): there the power form would be extrapolated far from
@@ -243,7 +258,6 @@ fn walk_part<T, P>(
                 }
             }
         }
-        i += run;
     }
 }
 
@@ -254,11 +268,16 @@ fn fallback<T>(direct: &impl Fn(usize, f64) -> T, span: usize, t: f64) -> T {
     direct(span, t)
 }
 
-/// Walks a sequence of parameters span by span: each search gallops from the previous span
-/// ([`BSplineBasis::find_span_near`]), so sorted parameters cost one or two comparisons each,
-/// or `O(log d)` when they skip `d` spans; any order stays correct.
+/// Walks a sequence of parameters span by span: each search gallops
+/// ([`BSplineBasis::find_span_near`]) from the uniform guess of the span while it proves
+/// near, else from the previous span (as [`crate::interp::IntervalCursor`]); any order stays
+/// correct.
 struct SpanCursor<'a> {
     basis: &'a BSplineBasis,
+    /// The uniform guess of a parameter's span (offset by the degree), trusted while it
+    /// proves near ([`crate::interp::IntervalCursor`]'s rule).
+    guess: crate::domain::UniformGuess,
+    trusted: bool,
     span: usize,
     lo: f64,
     hi: f64,
@@ -269,8 +288,12 @@ struct SpanCursor<'a> {
 impl<'a> SpanCursor<'a> {
     /// A cursor on the first span of the domain.
     fn new(basis: &'a BSplineBasis) -> Self {
+        let (a, b) = basis.domain();
+        let spans = basis.len() - basis.degree();
         let mut cursor = Self {
             basis,
+            guess: crate::domain::UniformGuess::new(a, b, spans),
+            trusted: true,
             span: 0,
             lo: 0.0,
             hi: 0.0,
@@ -298,19 +321,29 @@ impl<'a> SpanCursor<'a> {
         self.lo
     }
 
-    /// Moves to the span of `t` (as [`BSplineBasis::find_span`]); `true` if it changed.
+    /// Moves to the span of `t` (as [`BSplineBasis::find_span`]).
     #[inline]
-    fn advance(&mut self, t: f64) -> bool {
+    fn advance(&mut self, t: f64) {
         // inside the current span's half-open interval: unchanged (the right end b and points
         // outside the domain go through find_span, which applies the end rules)
         if self.lo <= t && t < self.hi {
-            return false;
+            return;
         }
-        let span = self.basis.find_span_near(self.span, t);
-        let changed = span != self.span;
-        if changed {
+        // the next span (sorted parameters, one or a few per span): non-empty, since
+        // t_{ℓ+1} = hi ≤ t < t_{ℓ+2}
+        let k = self.basis.knots().knots();
+        if self.span < self.basis.len() - 1 && self.hi <= t && t < k[self.span + 2] {
+            self.enter(self.span + 1);
+            return;
+        }
+        let p = self.basis.degree();
+        let g = p + self.guess.of(t);
+        let span = self
+            .basis
+            .find_span_near(if self.trusted { g } else { self.span }, t);
+        self.trusted = span.abs_diff(g) <= crate::domain::GUESS_SLACK;
+        if span != self.span {
             self.enter(span);
         }
-        changed
     }
 }
