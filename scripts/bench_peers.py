@@ -14,6 +14,7 @@ median is reported, with the ratio scipy / splinelab (above 1: splinelab is fast
 | bspline-curve-deg5   | the same at degree 5                                           |
 | bspline-curve-deg7   | the same at degree 7                                           |
 | bspline-curve-spans  | BSpline(t, c, 3)(ts): 10⁶ spans (10⁶ + 3 points in 3-D)        |
+| corner-data          | sympy.lambdify of X, X_s, X_t, X_st of the torus (numpy), k × k nodes |
 
 With `--sweep`, every pair is timed at every size of its workload's sweep (`splinelab bench
 --sizes`: the evaluation points, the data points of a build), both sides alternating at each
@@ -49,7 +50,11 @@ PAIRS = [
     "bspline-curve-deg5",
     "bspline-curve-deg7",
     "bspline-curve-spans",
+    "corner-data",
 ]
+# the peer of each workload (the CSV's `peer` column)
+PEER = {"corner-data": "sympy-lambdify"}
+SYMPY_VERSION = "1.14.0"
 # the default size of each workload (src/report/bench.rs), for the runs without --sweep
 DEFAULT_SIZE = {
     "cubic-spline-build": 1_000_000,
@@ -59,6 +64,7 @@ DEFAULT_SIZE = {
     "bspline-curve-deg5": 1_000_000,
     "bspline-curve-deg7": 1_000_000,
     "bspline-curve-spans": 1_000_000,
+    "corner-data": 257,
 }
 
 
@@ -67,11 +73,11 @@ def venv_python():
     python = state / "venv" / "bin" / "python"
     if not python.exists():
         subprocess.run([sys.executable, "-m", "venv", str(state / "venv")], check=True)
-    probe = subprocess.run([str(python), "-c", "import numpy, scipy"], capture_output=True)
+    probe = subprocess.run([str(python), "-c", "import numpy, scipy, sympy"], capture_output=True)
     if probe.returncode != 0:
         subprocess.run(
             [str(python), "-m", "pip", "install", "--quiet", "--disable-pip-version-check",
-             f"numpy=={NUMPY_VERSION}", f"scipy=={SCIPY_VERSION}"],
+             f"numpy=={NUMPY_VERSION}", f"scipy=={SCIPY_VERSION}", f"sympy=={SYMPY_VERSION}"],
             check=True,
         )
     return python
@@ -101,6 +107,18 @@ elif workload == "cubic-spline-eval":
     xs = np.linspace(0.0, 1000.0, size)
     run = lambda: cs(xs)
     points = xs.size
+elif workload == "corner-data":
+    # the torus (R = 2, r = 1) and its partials by sympy, lambdified for numpy once (outside
+    # the timing, as our trace is); each run evaluates the 12 functions on the k × k grid
+    import sympy as sp
+    s_, t_ = sp.symbols("s t")
+    X = [(2 + sp.cos(t_)) * sp.cos(s_), (2 + sp.cos(t_)) * sp.sin(s_), sp.sin(t_)]
+    exprs = X + [sp.diff(f, s_) for f in X] + [sp.diff(f, t_) for f in X] + [sp.diff(f, s_, t_) for f in X]
+    f = sp.lambdify((s_, t_), exprs, "numpy")
+    nodes = np.linspace(0.0, 2 * np.pi, size)
+    S, T = np.meshgrid(nodes, nodes, indexing="ij")
+    run = lambda: [np.broadcast_to(v, S.shape) for v in f(S, T)]
+    points = S.size
 elif workload == "bspline-curve-spans":
     curve = helix_curve(3, 1_000_003)
     ts = np.linspace(0.0, 1.0, size)
@@ -145,10 +163,11 @@ def pair(binary, python, workload, size, millis, rounds):
         "size": size,
         "points": ours[0]["points"],
         "splinelab_seconds": a,
-        "scipy_seconds": b,
-        "ratio_scipy_over_splinelab": b / a,
+        "peer": PEER.get(workload, "scipy"),
+        "peer_seconds": b,
+        "ratio_peer_over_splinelab": b / a,
         "rounds_splinelab": [r["seconds"] for r in ours],
-        "rounds_scipy": [r["seconds"] for r in theirs],
+        "rounds_peer": [r["seconds"] for r in theirs],
         "scipy": theirs[0]["scipy"],
         "numpy": theirs[0]["numpy"],
     }
@@ -182,7 +201,7 @@ def main():
     csv = tables / "bench-peers-sweep.csv"
     tmp = csv.with_suffix(".csv.tmp")
     tmp.write_text("workload,size,splinelab_seconds,peer_seconds,peer\n" + "".join(
-        f"{r['workload']},{r['size']},{r['splinelab_seconds']!r},{r['scipy_seconds']!r},scipy\n"
+        f"{r['workload']},{r['size']},{r['splinelab_seconds']!r},{r['peer_seconds']!r},{r['peer']}\n"
         for r in rows))
     tmp.replace(csv)
     print(f"wrote {csv}", flush=True)

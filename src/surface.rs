@@ -358,6 +358,13 @@ pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
 }
 
 /// Whether every component of a partials record is finite.
+/// `0` if every value of `p` is finite, NaN otherwise (branch-free: `Σ v · 0`).
+#[inline]
+fn zero_unless_non_finite(p: &Partials) -> f64 {
+    let z = |v: &Vector3<f64>| (v.x * 0.0 + v.y * 0.0) + v.z * 0.0;
+    (z(&p.point) + z(&p.ds)) + (z(&p.dt) + z(&p.dst))
+}
+
 pub(crate) fn partials_finite(p: &Partials) -> bool {
     [p.point, p.ds, p.dt, p.dst]
         .iter()
@@ -410,14 +417,18 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
     if cols == 0 {
         return Ok(());
     }
-    // each block reports whether all its values are finite
+    // each block reports whether all its values are finite: branch-free, folded into the
+    // loop that computes them (`v · 0` is 0 for a finite `v` and NaN otherwise, and a sum
+    // with a NaN is NaN), so the check costs a few multiply-adds per node
     let fill = |rows: &[f64], block: &mut [Partials]| -> bool {
         let mut ok = true;
         for (&s, row) in rows.iter().zip(block.chunks_mut(cols)) {
-            for (&t, p) in t_nodes.iter().zip(row) {
+            for (&t, p) in t_nodes.iter().zip(row.iter_mut()) {
                 *p = surface.partials(s, t);
-                ok &= partials_finite(p);
             }
+            // the row again while it is in the cache, in a loop of its own that vectorises
+            let nan_if_not_finite: f64 = row.iter().map(zero_unless_non_finite).sum();
+            ok &= nan_if_not_finite == 0.0;
         }
         ok
     };
@@ -427,13 +438,17 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
     } else {
         let rows_per = s_nodes.len().div_ceil(threads);
         std::thread::scope(|scope| {
-            let handles: Vec<_> = s_nodes
+            let mut blocks = s_nodes
                 .chunks(rows_per)
-                .zip(out.chunks_mut(rows_per * cols))
+                .zip(out.chunks_mut(rows_per * cols));
+            // the first block here, the others on threads of their own (one spawn fewer)
+            let first = blocks.next();
+            let handles: Vec<_> = blocks
                 .map(|(rows, block)| scope.spawn(move || fill(rows, block)))
                 .collect();
+            let here = first.is_none_or(|(rows, block)| fill(rows, block));
             // a panic in the user's surface is propagated as it would be on one thread
-            handles.into_iter().fold(true, |ok, h| {
+            handles.into_iter().fold(here, |ok, h| {
                 ok & h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
             })
         })

@@ -41,10 +41,21 @@ impl BenchResult {
         self.points as f64 / self.seconds
     }
 
-    /// `{"workload": …, "size": …, "points": …, "seconds": …, "throughput": …}`.
+    /// The least bytes one run moves between the processor and memory ([`traffic`]) per
+    /// second, if the workload's traffic is modelled.
+    pub fn bandwidth(&self) -> Option<f64> {
+        traffic(self.workload, self.size).map(|b| b as f64 / self.seconds)
+    }
+
+    /// `{"workload": …, "size": …, "points": …, "seconds": …, "throughput": …}`, with
+    /// `"bytes"` and `"bytes_per_second"` where [`traffic`] models the workload.
     pub fn to_json(&self) -> String {
+        let memory = match (traffic(self.workload, self.size), self.bandwidth()) {
+            (Some(b), Some(bw)) => format!(r#", "bytes": {b}, "bytes_per_second": {bw:e}"#),
+            _ => String::new(),
+        };
         format!(
-            r#"{{"workload": "{}", "size": {}, "points": {}, "seconds": {:e}, "throughput": {:e}}}"#,
+            r#"{{"workload": "{}", "size": {}, "points": {}, "seconds": {:e}, "throughput": {:e}{memory}}}"#,
             self.workload,
             self.size,
             self.points,
@@ -52,6 +63,61 @@ impl BenchResult {
             self.throughput()
         )
     }
+}
+
+/// The least bytes one run of workload `id` at `size` must move between the processor and
+/// memory when its data exceed the caches: its inputs read once and its outputs written
+/// once (8 bytes a number), plus, where the queries touch only part of a large object,
+/// a 64-byte line per array and query. `None` for workloads not modelled (the studies, the
+/// patches, which live in the caches). Against [`WORKLOADS`]' `memory-copy` of the same size
+/// (16 bytes a number: read and written), it says how far a workload is from the memory
+/// limit.
+///
+/// | workload | bytes |
+/// |---|---|
+/// | `memory-copy` | `16 k` |
+/// | `cubic-spline-build`, `-refit` | `16 k` read (x, y) + `24 k` written (nodes, values, moments) |
+/// | `cubic-spline-eval` | `16 k` (queries, values) + `min(24 n, 3 · 64 k)` of the `n = 10⁶`-node spline |
+/// | `bspline-curve`, `-deg5`, `-deg7` | `8 k` + `24 k` (parameters, 3-D points) |
+/// | `bspline-curve-spans` | `32 k` + `min(24 m + 8 m, 2 · 64 k)` of the `m ≈ 10⁶`-span curve's points and knots |
+/// | `nurbs-circle` | `8 k` + `16 k` |
+/// | `angular-curve`, `-pointwise` | `16 k` (2-D samples) |
+/// | `torus-grid`, `-1core` | `24 k²` (3-D points) |
+/// | `corner-data` | `96 k²` (point and three partials) |
+pub fn traffic(id: &str, size: usize) -> Option<u64> {
+    let k = u64::try_from(size).ok()?;
+    let line = 64u64;
+    let per = |bytes: u64| bytes.checked_mul(k);
+    match id {
+        "memory-copy" => per(16),
+        "cubic-spline-build" | "cubic-spline-refit" => per(40),
+        "cubic-spline-eval" => {
+            per(16)?.checked_add((24 * SPLINE_POINTS as u64).min(per(3 * line)?))
+        }
+        "bspline-curve" | "bspline-curve-deg5" | "bspline-curve-deg7" => per(32),
+        "bspline-curve-spans" => per(32)?.checked_add((32 * MANY_SPANS as u64).min(per(2 * line)?)),
+        "nurbs-circle" => per(24),
+        "angular-curve" | "angular-curve-pointwise" => per(16),
+        "torus-grid" | "torus-grid-1core" => per(24)?.checked_mul(k),
+        "corner-data" => per(96)?.checked_mul(k),
+        _ => None,
+    }
+}
+
+/// `memory-copy`: `k` numbers copied from one buffer into another (both allocated and
+/// touched before the timing), in two halves on two threads from the batch threshold as the
+/// batch evaluations are — the machine's bandwidth at that size.
+fn memory_copy(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let from = linspace(0.0, 1.0, k);
+    let mut to = vec![0.0; k];
+    let parallel = k >= crate::bspline::curve::EVAL_PARALLEL_MIN;
+    Ok(Box::new(move || {
+        crate::parallel::fill_halves(black_box(&from), &mut to, 0.0, parallel, |a, b| {
+            b.copy_from_slice(a)
+        });
+        Ok(black_box(&to).len())
+    }))
 }
 
 /// One size of a comparison with a peer library, both sides timed in alternating rounds
@@ -416,7 +482,7 @@ fn symbolic_torus(_: usize) -> Result<Runner> {
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 19] = [
+pub const WORKLOADS: [Workload; 20] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
@@ -552,6 +618,14 @@ pub const WORKLOADS: [Workload; 19] = [
         size: 1_000_000,
         sweep: POINT_SWEEP,
         setup: angular_curve_pointwise,
+    },
+    Workload {
+        id: "memory-copy",
+        description: "k numbers copied between two buffers (default 1e7; both cores from 65 536): the memory bandwidth beside which the traffic of the other workloads is read (bench::traffic)",
+        unit: "numbers",
+        size: 10_000_000,
+        sweep: POINT_SWEEP,
+        setup: memory_copy,
     },
     Workload {
         id: "table-i",
@@ -827,6 +901,28 @@ mod tests {
             .to_svg()
             .expect("svg");
         assert!(svg.contains("parity") && svg.contains("cubic-spline-eval (scipy)"));
+    }
+
+    /// Every point and grid workload has a traffic model, in its JSON; the studies none;
+    /// huge sizes give `None`, not an overflow.
+    #[test]
+    fn traffic_is_modelled_for_the_batch_workloads() {
+        for w in &WORKLOADS {
+            let modelled = traffic(w.id, w.size);
+            let batch = w.sweep == POINT_SWEEP || matches!(w.unit, "nodes per side");
+            assert_eq!(modelled.is_some(), batch, "{}", w.id);
+        }
+        let r = BenchResult {
+            workload: "memory-copy",
+            size: 1000,
+            points: 1000,
+            seconds: 1e-6,
+        };
+        assert!(r
+            .to_json()
+            .contains(r#""bytes": 16000, "bytes_per_second": 1.6e10"#));
+        assert_eq!(traffic("corner-data", usize::MAX), None);
+        assert_eq!(traffic("t6-row", 8), None);
     }
 
     /// A peer CSV that is not one: typed errors naming the line.
