@@ -174,6 +174,24 @@ impl<const N: usize> ParametricCurve<N> for BSplineCurve<N> {
 /// costs more than it saves).
 pub(crate) const EVAL_PARALLEL_MIN: usize = 1 << 16;
 
+/// Parameters from which a *sparse* batch — fewer than [`FORM_MIN_RUN`] parameters per
+/// span on average — is split between two threads ([`two_threads`]).
+pub(crate) const SPARSE_PARALLEL_MIN: usize = 1 << 13;
+
+/// Whether a batch of `queries` parameters on a curve of `pieces` spans is worth two
+/// threads: from [`EVAL_PARALLEL_MIN`] parameters, or from [`SPARSE_PARALLEL_MIN`] when they
+/// are sparse (fewer than [`FORM_MIN_RUN`] per span on average), where each costs a
+/// point-by-point evaluation (about 20 ns at degree 3, measured) instead of a Horner step.
+pub(crate) fn two_threads(queries: usize, pieces: usize) -> bool {
+    let sparse = pieces.saturating_mul(FORM_MIN_RUN) > queries;
+    queries
+        >= if sparse {
+            SPARSE_PARALLEL_MIN
+        } else {
+            EVAL_PARALLEL_MIN
+        }
+}
+
 /// The fewest parameters in a span for which [`walk_spans`] forms the span's fast form;
 /// shorter runs (sparse or unsorted parameters) are evaluated point by point, which costs
 /// less than a form (its blossoming and power conversion are `O(p²)` per coordinate).
@@ -184,7 +202,8 @@ pub(crate) const FORM_MIN_RUN: usize = 4;
 /// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of at least
 /// [`FORM_MIN_RUN`] parameters in it (shorter runs are evaluated by `direct`), and `at(piece, (t − t_ℓ)/w)` evaluates each
 /// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
-/// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters the two halves of `ts` are
+/// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters ([`SPARSE_PARALLEL_MIN`] for
+/// sparse ones, [`two_threads`]) the two halves of `ts` are
 /// walked on two threads; a span's data depend on the span alone, so the values are the
 /// same whatever the split.
 pub(crate) fn walk_spans<T: Copy + Send, P>(
@@ -196,7 +215,8 @@ pub(crate) fn walk_spans<T: Copy + Send, P>(
     at: impl Fn(&P, f64) -> T + Sync,
     direct: impl Fn(usize, f64) -> T + Sync,
 ) {
-    crate::parallel::fill_halves(ts, out, zero, ts.len() >= EVAL_PARALLEL_MIN, |ts, out| {
+    let parallel = two_threads(ts.len(), basis.len() - basis.degree());
+    crate::parallel::fill_halves(ts, out, zero, parallel, |ts, out| {
         walk_part(basis, ts, out, &piece, &at, &direct)
     });
 }
