@@ -200,8 +200,8 @@ def main():
     tables.mkdir(parents=True, exist_ok=True)
     csv = tables / "bench-peers-sweep.csv"
     tmp = csv.with_suffix(".csv.tmp")
-    tmp.write_text("workload,size,splinelab_seconds,peer_seconds,peer\n" + "".join(
-        f"{r['workload']},{r['size']},{r['splinelab_seconds']!r},{r['peer_seconds']!r},{r['peer']}\n"
+    tmp.write_text("workload,size,points,splinelab_seconds,peer_seconds,peer\n" + "".join(
+        f"{r['workload']},{r['size']},{r['points']},{r['splinelab_seconds']!r},{r['peer_seconds']!r},{r['peer']}\n"
         for r in rows))
     tmp.replace(csv)
     print(f"wrote {csv}", flush=True)

@@ -165,7 +165,7 @@ fn bench_at_a_size_lists_sizes_and_draws_peers() {
     let peers = dir.path().join("peers.csv");
     std::fs::write(
         &peers,
-        "workload,size,splinelab_seconds,peer_seconds,peer\npatch-matrix,4,1e-6,3e-6,scipy\npatch-matrix,8,2e-6,3e-6,scipy\n",
+        "workload,size,points,splinelab_seconds,peer_seconds,peer\npatch-matrix,4,16,1e-6,3e-6,scipy\npatch-matrix,8,64,2e-6,3e-6,scipy\n",
     )
     .expect("write");
     let sweep = || {

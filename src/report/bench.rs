@@ -128,6 +128,8 @@ pub struct PeerPoint {
     pub workload: String,
     /// Its size parameter.
     pub size: usize,
+    /// Points (or nodes) one run produces.
+    pub points: usize,
     /// Our median seconds per run.
     pub ours: f64,
     /// The peer's median seconds per run.
@@ -144,14 +146,15 @@ impl PeerPoint {
 }
 
 /// The header of a peer comparison's CSV ([`parse_peers`]).
-pub const PEER_HEADER: &str = "workload,size,splinelab_seconds,peer_seconds,peer";
+pub const PEER_HEADER: &str = "workload,size,points,splinelab_seconds,peer_seconds,peer";
 
 /// Parses a peer comparison's CSV (header [`PEER_HEADER`], one size per line), as
 /// `scripts/bench_peers.py --sweep` writes it.
 ///
 /// # Errors
-/// [`crate::report::Error::Parse`] for a missing or different header, a line without five
-/// fields, a size that is not a count, or a time that is not finite and positive.
+/// [`crate::report::Error::Parse`] for a missing or different header, a line without six
+/// fields, a size or point count that is not a count, or a time that is not finite and
+/// positive.
 pub fn parse_peers(what: &str, text: &str) -> crate::report::Result<Vec<PeerPoint>> {
     let bad = |line: usize, message: String| crate::report::Error::Parse {
         what: what.to_string(),
@@ -171,12 +174,14 @@ pub fn parse_peers(what: &str, text: &str) -> crate::report::Result<Vec<PeerPoin
             continue;
         }
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
-        let [workload, size, ours, peer, name] = f[..] else {
-            return Err(bad(n, format!("{} fields, expected 5", f.len())));
+        let [workload, size, points, ours, peer, name] = f[..] else {
+            return Err(bad(n, format!("{} fields, expected 6", f.len())));
         };
-        let size: usize = size
-            .parse()
-            .map_err(|_| bad(n, format!("size {size:?} is not a count")))?;
+        let count = |what: &str, v: &str| -> crate::report::Result<usize> {
+            v.parse()
+                .map_err(|_| bad(n, format!("{what} {v:?} is not a count")))
+        };
+        let (size, points) = (count("size", size)?, count("points", points)?);
         let time = |v: &str| -> crate::report::Result<f64> {
             match v.parse::<f64>() {
                 Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
@@ -186,6 +191,7 @@ pub fn parse_peers(what: &str, text: &str) -> crate::report::Result<Vec<PeerPoin
         out.push(PeerPoint {
             workload: workload.to_string(),
             size,
+            points,
             ours: time(ours)?,
             peer: time(peer)?,
             peer_name: name.to_string(),
@@ -729,8 +735,7 @@ pub fn sweep(
 /// panel draws each compared workload's peer time over ours against size, parity (1) dashed:
 /// where a line falls to it, the lead is gone.
 pub fn scaling_figure(results: &[BenchResult], peers: &[PeerPoint], machine: &str) -> Figure {
-    use crate::report::plot2d::{Figure2d, Series, Style};
-    use crate::report::style::LINE_PALETTE;
+    use crate::report::plot2d::{Figure2d, Series};
     let mut ids: Vec<&str> = Vec::new();
     for r in results {
         if !ids.contains(&r.workload) {
@@ -765,18 +770,7 @@ pub fn scaling_figure(results: &[BenchResult], peers: &[PeerPoint], machine: &st
                 .filter(|r| r.workload == *id)
                 .map(|r| (r.points as f64, r.throughput()))
                 .collect();
-            // the palette, then two more colours, then dashes
-            let extra = [
-                plotters::style::RGBColor(120, 120, 120),
-                plotters::style::RGBColor(150, 30, 30),
-            ];
-            let colors: Vec<_> = LINE_PALETTE.iter().chain(&extra).copied().collect();
-            let color = colors[k % colors.len()];
-            let style = if k < colors.len() {
-                Style::LinePoints(4)
-            } else {
-                Style::Dashed
-            };
+            let (color, style) = line_style(k);
             panel = panel.with(Series::line(*id, points, color).styled(style));
         }
         // an empty band below the data for the legend, whatever the data: the legend's share
@@ -813,10 +807,30 @@ pub fn scaling_figure(results: &[BenchResult], peers: &[PeerPoint], machine: &st
     .with_size(800 * columns as u32, 800)
 }
 
+/// The colour and style of the `k`-th line of a panel: the palette, then two more colours,
+/// lines with points; beyond, the same colours dashed.
+fn line_style(k: usize) -> (plotters::style::RGBColor, crate::report::plot2d::Style) {
+    use crate::report::plot2d::Style;
+    let extra = [
+        plotters::style::RGBColor(120, 120, 120),
+        plotters::style::RGBColor(150, 30, 30),
+    ];
+    let colors: Vec<_> = crate::report::style::LINE_PALETTE
+        .iter()
+        .chain(&extra)
+        .copied()
+        .collect();
+    let style = if k < colors.len() {
+        Style::LinePoints(4)
+    } else {
+        Style::Dashed
+    };
+    (colors[k % colors.len()], style)
+}
+
 /// The panel of peer time over ours against size (see [`scaling_figure`]).
 fn peer_panel(peers: &[PeerPoint]) -> crate::report::plot2d::Panel {
     use crate::report::plot2d::{Panel, Series, Style};
-    use crate::report::style::LINE_PALETTE;
     let mut ids: Vec<(&str, &str)> = Vec::new();
     for p in peers {
         if !ids.contains(&(p.workload.as_str(), p.peer_name.as_str())) {
@@ -825,12 +839,12 @@ fn peer_panel(peers: &[PeerPoint]) -> crate::report::plot2d::Panel {
     }
     let mut panel = Panel::new(
         "peer time ÷ splinelab time (above 1: splinelab faster)",
-        "size (points per run)",
+        "points per run",
         "ratio",
     )
     .log(true, true)
     .legend_at(plotters::prelude::SeriesLabelPosition::UpperLeft);
-    let sizes = peers.iter().map(|p| p.size as f64);
+    let sizes = peers.iter().map(|p| p.points as f64);
     let (lo, hi) = sizes.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
         (lo.min(x), hi.max(x))
     });
@@ -838,12 +852,10 @@ fn peer_panel(peers: &[PeerPoint]) -> crate::report::plot2d::Panel {
         let points: Vec<(f64, f64)> = peers
             .iter()
             .filter(|p| p.workload == *id && p.peer_name == *peer)
-            .map(|p| (p.size as f64, p.ratio()))
+            .map(|p| (p.points as f64, p.ratio()))
             .collect();
-        let color = LINE_PALETTE[k % LINE_PALETTE.len()];
-        panel = panel.with(
-            Series::line(format!("{id} ({peer})"), points, color).styled(Style::LinePoints(4)),
-        );
+        let (color, style) = line_style(k);
+        panel = panel.with(Series::line(format!("{id} ({peer})"), points, color).styled(style));
     }
     if lo < hi {
         let grey = plotters::style::RGBColor(110, 110, 110);
@@ -893,7 +905,7 @@ mod tests {
             .collect();
         let svg = scaling_figure(&results, &[], "test").to_svg().expect("svg");
         assert!(svg.contains("bspline-curve") && svg.contains("torus-grid"));
-        let text = format!("{PEER_HEADER}\ncubic-spline-eval,1000,1e-5,3e-5,scipy\ncubic-spline-eval,10000,1e-4,2e-4,scipy\n");
+        let text = format!("{PEER_HEADER}\ncubic-spline-eval,1000,1000,1e-5,3e-5,scipy\ncubic-spline-eval,10000,10000,1e-4,2e-4,scipy\n");
         let peers = parse_peers("peers", &text).expect("parses");
         assert_eq!(peers.len(), 2);
         assert!((peers[0].ratio() - 3.0).abs() < 1e-12);
@@ -932,10 +944,11 @@ mod tests {
             (String::new(), 1),
             ("workload,size\n".into(), 1),
             (format!("{PEER_HEADER}\nx,1,1e-3\n"), 2),
-            (format!("{PEER_HEADER}\nx,-1,1e-3,1e-3,scipy\n"), 2),
-            (format!("{PEER_HEADER}\n\nx,10,NaN,1e-3,scipy\n"), 3),
-            (format!("{PEER_HEADER}\nx,10,1e-3,0,scipy\n"), 2),
-            (format!("{PEER_HEADER}\nx,10,1e-3,inf,scipy\n"), 2),
+            (format!("{PEER_HEADER}\nx,-1,1,1e-3,1e-3,scipy\n"), 2),
+            (format!("{PEER_HEADER}\nx,1,1.5,1e-3,1e-3,scipy\n"), 2),
+            (format!("{PEER_HEADER}\n\nx,10,10,NaN,1e-3,scipy\n"), 3),
+            (format!("{PEER_HEADER}\nx,10,10,1e-3,0,scipy\n"), 2),
+            (format!("{PEER_HEADER}\nx,10,10,1e-3,inf,scipy\n"), 2),
         ];
         for (text, line) in bad {
             match parse_peers("peers", &text) {
