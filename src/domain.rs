@@ -316,6 +316,8 @@ pub(crate) struct UniformGuess {
     lo: f64,
     scale: f64,
     last: usize,
+    /// Whether the last guess was within [`GUESS_SLACK`] of the answer.
+    trusted: bool,
 }
 
 impl UniformGuess {
@@ -326,7 +328,25 @@ impl UniformGuess {
             lo,
             scale: if scale.is_finite() { scale } else { 0.0 },
             last: count.saturating_sub(1),
+            trusted: true,
         }
+    }
+
+    /// `search(hint)` from the guess `offset + of(x)` while the guesses prove near, else
+    /// from `previous`; the answer decides whether the next guess is trusted. The answer is
+    /// `search`'s, whatever the hint.
+    #[inline]
+    pub(crate) fn search(
+        &mut self,
+        x: f64,
+        offset: usize,
+        previous: usize,
+        search: impl FnOnce(usize) -> usize,
+    ) -> usize {
+        let g = offset + self.of(x);
+        let found = search(if self.trusted { g } else { previous });
+        self.trusted = found.abs_diff(g) <= GUESS_SLACK;
+        found
     }
 
     /// The guessed index of `x`.

@@ -297,7 +297,6 @@ struct SpanCursor<'a> {
     /// The uniform guess of a parameter's span (offset by the degree), trusted while it
     /// proves near ([`crate::interp::IntervalCursor`]'s rule).
     guess: crate::domain::UniformGuess,
-    trusted: bool,
     span: usize,
     lo: f64,
     hi: f64,
@@ -313,7 +312,6 @@ impl<'a> SpanCursor<'a> {
         let mut cursor = Self {
             basis,
             guess: crate::domain::UniformGuess::new(a, b, spans),
-            trusted: true,
             span: 0,
             lo: 0.0,
             hi: 0.0,
@@ -357,11 +355,10 @@ impl<'a> SpanCursor<'a> {
             return;
         }
         let p = self.basis.degree();
-        let g = p + self.guess.of(t);
+        let (basis, previous) = (self.basis, self.span);
         let span = self
-            .basis
-            .find_span_near(if self.trusted { g } else { self.span }, t);
-        self.trusted = span.abs_diff(g) <= crate::domain::GUESS_SLACK;
+            .guess
+            .search(t, p, previous, |hint| basis.find_span_near(hint, t));
         if span != self.span {
             self.enter(span);
         }

@@ -112,7 +112,6 @@ pub(crate) struct IntervalCursor<'a> {
     nodes: &'a [f64],
     i: usize,
     guess: crate::domain::UniformGuess,
-    trusted: bool,
 }
 
 impl<'a> IntervalCursor<'a> {
@@ -123,7 +122,6 @@ impl<'a> IntervalCursor<'a> {
             nodes,
             i: 0,
             guess: crate::domain::UniformGuess::new(nodes[0], nodes[n], n),
-            trusted: true,
         }
     }
 
@@ -137,10 +135,9 @@ impl<'a> IntervalCursor<'a> {
             self.i = crate::domain::locate_from(nodes, i, x);
             return self.i;
         }
-        let g = self.guess.of(x);
-        let hint = if self.trusted { g } else { self.i };
-        self.i = crate::domain::locate_from(self.nodes, hint, x);
-        self.trusted = self.i.abs_diff(g) <= crate::domain::GUESS_SLACK;
+        self.i = self
+            .guess
+            .search(x, 0, i, |hint| crate::domain::locate_from(nodes, hint, x));
         self.i
     }
 }
