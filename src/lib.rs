@@ -58,6 +58,7 @@ pub mod grid;
 pub mod hermite;
 mod horner;
 pub mod interp;
+mod lanes;
 mod memory;
 pub mod metrics;
 pub mod nurbs;

@@ -145,7 +145,8 @@ impl<const N: usize> NurbsCurve<N> {
         span: usize,
         n: &[D],
     ) -> (SVector<D, N>, D) {
-        let first = span - self.basis.degree();
+        // from n's length, so that a length known to the caller's code is known here too
+        let first = span + 1 - n.len();
         n.iter()
             .zip(&self.points[first..=span])
             .zip(&self.scaled[first..=span])
@@ -250,7 +251,16 @@ impl<const N: usize> NurbsCurve<N> {
                     horner::eval(den.as_ref(), s).x,
                 ))
             },
-            |span, t| Self::project(self.homogeneous_on_span(span, t)),
+            (
+                |span, t| Self::project(self.homogeneous_on_span(span, t)),
+                |spans, ts, out| {
+                    self.basis.with_nonzero_lanes(spans, ts, |g, n| {
+                        if let Some(o) = out.get_mut(g) {
+                            *o = Self::project(self.homogeneous(spans[g], n));
+                        }
+                    })
+                },
+            ),
         );
     }
 }

@@ -426,6 +426,22 @@ fn outside_the_domain_the_batch_is_the_single_evaluation() {
     }
 }
 
+/// A B-spline curve in the plane on random knots ([`plane_curve`]), the NURBS curve on the same
+/// basis and points with weights in [0.5, 1.5], and the distinct knots of the domain.
+fn curve_pair(
+    p: usize,
+    interior: usize,
+    rng: &mut Rng,
+) -> (BSplineBasis, BSplineCurve<2>, NurbsCurve<2>, Vec<f64>) {
+    let (k, basis, points) = plane_curve(p, interior, rng);
+    let weights: Vec<f64> = (0..basis.len()).map(|_| 0.5 + rng.next()).collect();
+    let curve = BSplineCurve::try_new(basis.clone(), points.clone()).unwrap();
+    let nurbs = NurbsCurve::try_new(basis.clone(), points, weights).unwrap();
+    let mut distinct = k[p..k.len() - p].to_vec();
+    distinct.dedup();
+    (basis, curve, nurbs, distinct)
+}
+
 /// Queries for a partition of `nodes` (issue 26): sorted with a stride that skips `skip`
 /// intervals between neighbours (the galloping search's case), shuffled, and the domain's
 /// ends, points outside and beyond, and non-finite values mixed in.
@@ -479,20 +495,57 @@ proptest! {
     #[test]
     fn bspline_batch_skipping_spans_equals_pointwise(seed in any::<u64>(), p in 1usize..=5, interior in prop_oneof![Just(200usize), Just(40_000usize)], skip in prop_oneof![Just(1usize), Just(13usize), Just(1_001usize)], shuffle in any::<bool>()) {
         let mut rng = Rng(seed | 1);
-        let (k, basis, points) = plane_curve(p, interior, &mut rng);
-        let weights: Vec<f64> = (0..basis.len()).map(|_| 0.5 + rng.next()).collect();
-        let curve = BSplineCurve::try_new(basis.clone(), points.clone()).unwrap();
-        let nurbs = NurbsCurve::try_new(basis.clone(), points, weights).unwrap();
-        let distinct: Vec<f64> = {
-            let mut d = k[p..k.len() - p].to_vec();
-            d.dedup();
-            d
-        };
+        let (_, curve, nurbs, distinct) = curve_pair(p, interior, &mut rng);
         let ts = strided_queries(&distinct, skip, shuffle, &mut rng);
         let (mut a, mut b) = (Vec::new(), Vec::new());
         curve.eval_many(&ts, &mut a);
         nurbs.eval_many(&ts, &mut b);
         check_batch("B-spline", &ts, &a, |t| curve.point(t), tol_batch(p))?;
         check_batch("NURBS", &ts, &b, |t| nurbs.point(t), 2.0 * tol_batch(p))?;
+    }
+}
+
+/// Whether two values are the same bit for bit (NaN: any NaN).
+fn same_bits<const N: usize>(a: &SVector<f64, N>, b: &SVector<f64, N>) -> bool {
+    a.iter()
+        .zip(b.iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
+}
+
+proptest! {
+    #![proptest_config(config(16))]
+
+    /// Sparse batches (issue 26): parameters in spans that hold fewer than four of the queries
+    /// (`FORM_MIN_RUN`, below which no power form is made) are evaluated several at a time
+    /// side by side (`Lanes`) — the same operations as the single evaluation, so the values
+    /// are `ParametricCurve::point`'s bit for bit, at every degree (lanes up to 7, one at a
+    /// time above), sorted or shuffled, inside and outside the domain.
+    #[test]
+    fn sparse_batches_are_the_single_evaluation_bit_for_bit(seed in any::<u64>(), p in 0usize..=9, interior in prop_oneof![Just(40usize), Just(5_000usize)], skip in prop_oneof![Just(1usize), Just(3usize), Just(13usize), Just(101usize)], shuffle in any::<bool>()) {
+        let mut rng = Rng(seed | 1);
+        let (basis, curve, nurbs, distinct) = curve_pair(p, interior, &mut rng);
+        let mut ts = strided_queries(&distinct, skip, shuffle, &mut rng);
+        ts.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1e300, 1e300]);
+        order(&mut ts, shuffle, &mut rng);
+        let mut per_span = std::collections::HashMap::new();
+        for &t in &ts {
+            *per_span.entry(basis.find_span(t)).or_insert(0usize) += 1;
+        }
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        curve.eval_many(&ts, &mut a);
+        nurbs.eval_many(&ts, &mut b);
+        let mut checked = 0;
+        for (i, &t) in ts.iter().enumerate() {
+            if per_span[&basis.find_span(t)] >= 4 {
+                continue;
+            }
+            checked += 1;
+            prop_assert!(same_bits(&a[i], &curve.point(t)), "B-spline at {:e}: {:?} vs {:?}", t, a[i], curve.point(t));
+            prop_assert!(same_bits(&b[i], &nurbs.point(t)), "NURBS at {:e}: {:?} vs {:?}", t, b[i], nurbs.point(t));
+        }
+        // the check is not empty: most queries are sparse where the curve has many spans
+        if distinct.len() > 100 * skip {
+            prop_assert!(checked * 2 >= ts.len(), "most queries are sparse: {} of {}", checked, ts.len());
+        }
     }
 }

@@ -3,8 +3,11 @@
 
 use crate::bspline::knots::KnotVector;
 use crate::error::{Error, Result};
+use crate::lanes::Lanes;
 use nalgebra::SVector;
 use num_dual::DualNum;
+use num_traits::{One, Zero};
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// The normalised B-spline basis `{N_{i,p}}`, `i = 0 … n`, of degree `p` (order `m = p + 1`) on a
 /// knot vector `t₀ ≤ … ≤ t_{n+p+1}` (0-based; the slides count from 1).
@@ -129,6 +132,12 @@ impl BSplineBasis {
     /// found by galloping from `hint` ([`crate::domain::partition_point_from`]), so sorted
     /// parameters that skip spans cost `O(log d)` comparisons near the previous span.
     pub(crate) fn find_span_near(&self, hint: usize, t: f64) -> usize {
+        // the hint itself, where it holds t (two loads, no search): t_ℓ ≤ t < t_{ℓ+1} makes ℓ
+        // the last knot index with t_ℓ ≤ t, a non-empty span, and t < t_{ℓ+1} ≤ b
+        let k = self.knots.knots();
+        if (self.degree..self.len()).contains(&hint) && k[hint] <= t && t < k[hint + 1] {
+            return hint;
+        }
         self.span_by(t, Some(hint.saturating_sub(self.degree)))
     }
 
@@ -181,18 +190,27 @@ impl BSplineBasis {
     }
 
     /// The Bézier points `b₀ … b_p` (into `out`) of the piece on span `ℓ = span` of the curve
-    /// whose control points on the span are `points = P_{ℓ−p} … P_ℓ`: on `[t_ℓ, t_{ℓ+1}]`,
-    /// `Σᵢ Pᵢ N_{i,p}(t) = Σₖ bₖ Bₖᵖ(s)`, `s = (t − t_ℓ)/(t_{ℓ+1} − t_ℓ)`.
+    /// whose control points on the span are `points = P_{ℓ−p} … P_ℓ`: on `[a, b] = [t_ℓ, t_{ℓ+1}]`,
+    /// `Σᵢ Pᵢ N_{i,p}(t) = Σₖ bₖ Bₖᵖ(s)`, `s = (t − a)/(b − a)`.
     ///
     /// By blossoming (Ramshaw; Farin, *Curves and Surfaces for CAGD*, ch. 8):
-    /// `bₖ = B(t_ℓ, …, t_ℓ, t_{ℓ+1}, …, t_{ℓ+1})` with `p − k` arguments `t_ℓ` and `k` arguments
-    /// `t_{ℓ+1}`, each blossom value by de Boor's triangle with the argument `u_r` at level `r`:
-    /// `d_j ← (1 − α) d_{j−1} + α d_j`, `α = (u_r − t_J)/(t_{J+p+1−r} − t_J)`, `J = ℓ − p + j`
-    /// (`1 − α` as `(t_{J+p+1−r} − u_r)/(t_{J+p+1−r} − t_J)`).
-    /// Every interval `[t_J, t_{J+p+1−r}]` contains the span, so the denominators are at least
-    /// its width and every `α` is in `[0, 1]`: the Bézier points are convex combinations of
-    /// the control points, accurate however close the knots. `O(p³)` per span; `tmp` holds the
-    /// triangle (`p + 1` entries, like `points` and `out`).
+    /// `bₖ = B(a^{p−k}, b^k)`, in two de Boor triangles (`d_j ← (1 − α) d_{j−1} + α d_j` at level
+    /// `r`, nodes `j = p … r`, `α = (u − t_J)/(t_{J+p+1−r} − t_J)`, `J = ℓ − p + j`, and `1 − α`
+    /// as `(t_{J+p+1−r} − u)/(t_{J+p+1−r} − t_J)`):
+    /// 1. at `u = a` on the control points: the last node after level `r` is
+    ///    `Q_r = B(a^r, t_{ℓ+1}, …, t_{ℓ+p−r})` — the control points once `a` is inserted `p`
+    ///    times;
+    /// 2. `R_m = Q_{p−m}` are the control points of the same piece on the knots
+    ///    `a, …, a (p times), t_{ℓ+1}, …, t_{ℓ+p}` (the window of `R_m` is
+    ///    `a^{p−m}, t_{ℓ+1}, …, t_{ℓ+m}`); de Boor's triangle at `u = b = t_{ℓ+1}` on them leaves
+    ///    node `k` after level `k` at `B(b^k, a^{p−k}) = bₖ` (its knots beyond the `k` arguments
+    ///    are all `a`), and later levels do not touch it.
+    ///
+    /// `p(p + 1)` vector combinations and `p(p + 1)/2 + p` divisions per span (one triangle
+    /// per Bézier point, as before, took `p(p + 1)²/2`). Every interval `[t_J, t_{J+p+1−r}]` of
+    /// either triangle contains the span, so the denominators are at least its width and every
+    /// `α` is in `[0, 1]`: the Bézier points are convex combinations of the control points,
+    /// accurate however close the knots. `tmp` holds `p + 1` entries, like `points` and `out`.
     pub(crate) fn span_bezier<const N: usize>(
         &self,
         span: usize,
@@ -203,52 +221,36 @@ impl BSplineBasis {
         let p = self.degree;
         let k = self.knots.knots();
         let (a, b) = (k[span], k[span + 1]);
-        // the level-r weights of node j at the two arguments, (1 − α, α) with
-        // α = (u − t_J)/(t_{J+p+1−r} − t_J), formed once (p(p+1)/2 divisions) for the p + 1
-        // blossom values, in the triangle's order (by level, nodes from the top down), as
-        // [at t_ℓ, at t_{ℓ+1}]; on the stack up to degree 8. Both weights come from the
-        // distances to the interval's ends (as in the basis recurrence), not 1 − α from α:
+        // the level's nodes from the top down: d_j ← β d_{j−1} + α d_j, the two weights from
+        // the distances to the interval's ends (as in the basis recurrence), not 1 − α from α:
         // when α is within ulps of 1 the small weight keeps its relative accuracy, which
-        // matters where it multiplies a large weight of a NURBS curve.
-        let mut weights = [[(0.0, 0.0); 2]; 36];
-        let mut owned = Vec::new();
-        let count = p * (p + 1) / 2;
-        let alphas: &mut [[(f64, f64); 2]] = if count <= weights.len() {
-            &mut weights[..count]
-        } else {
-            owned.resize(count, [(0.0, 0.0); 2]);
-            &mut owned
+        // matters where it multiplies a large weight of a NURBS curve
+        let lerp = |d: &mut [SVector<f64, N>], j: usize, lo: f64, hi: f64, u: f64| {
+            let inv = 1.0 / (hi - lo);
+            d[j] = d[j - 1] * ((hi - u) * inv) + d[j] * ((u - lo) * inv);
         };
-        let mut slot = 0;
+        // 1. at a: the last node after each level, stored as R_m = Q_{p−m} (out[p − r])
+        tmp.copy_from_slice(points);
+        out[p] = tmp[p];
         for r in 1..=p {
             for j in (r..=p).rev() {
-                let (lo, hi) = (k[span - p + j], k[span + j + 1 - r]);
-                let inv = 1.0 / (hi - lo);
-                alphas[slot] = [
-                    ((hi - a) * inv, (a - lo) * inv),
-                    ((hi - b) * inv, (b - lo) * inv),
-                ];
-                slot += 1;
+                lerp(tmp, j, k[span - p + j], k[span + j + 1 - r], a);
             }
+            out[p - r] = tmp[p];
         }
-        for (i, o) in out.iter_mut().enumerate() {
-            tmp.copy_from_slice(points);
-            let mut slot = 0;
-            for r in 1..=p {
-                let at = usize::from(r > p - i);
-                // the level's nodes from the top down, as the triangle needs: j = p … r
-                for j in (r..=p).rev() {
-                    let (beta, alpha) = alphas[slot][at];
-                    slot += 1;
-                    tmp[j] = tmp[j - 1] * beta + tmp[j] * alpha;
-                }
+        // 2. at b on the R's, whose knots t_J are all a: node k ends as b_k
+        for r in 1..=p {
+            for j in (r..=p).rev() {
+                lerp(out, j, a, k[span + j + 1 - r], b);
             }
-            *o = tmp[p];
         }
     }
 
     /// `f` of the `p + 1` basis values on `span` at `t` ([`BSplineBasis::nonzero_into`]),
     /// kept on the stack up to degree 7: the point-by-point paths allocate nothing there.
+    /// Up to degree 7 the degree is made a constant of the code (one match per call), so
+    /// the triangle is unrolled and its knot reads need no bounds checks — the sparse batch
+    /// paths evaluate every parameter here.
     #[inline]
     pub(crate) fn with_nonzero<D: DualNum<Primitive = f64> + Copy, R>(
         &self,
@@ -256,16 +258,92 @@ impl BSplineBasis {
         t: D,
         f: impl FnOnce(&[D]) -> R,
     ) -> R {
-        const STACK: usize = 8;
-        let len = self.degree + 1;
-        if len <= STACK {
-            let mut n = [D::zero(); STACK];
-            self.nonzero_into(span, t, &mut n[..len]);
-            f(&n[..len])
+        match self.degree {
+            0 => self.with_nonzero_of::<D, R, 1>(span, t, f),
+            1 => self.with_nonzero_of::<D, R, 2>(span, t, f),
+            2 => self.with_nonzero_of::<D, R, 3>(span, t, f),
+            3 => self.with_nonzero_of::<D, R, 4>(span, t, f),
+            4 => self.with_nonzero_of::<D, R, 5>(span, t, f),
+            5 => self.with_nonzero_of::<D, R, 6>(span, t, f),
+            6 => self.with_nonzero_of::<D, R, 7>(span, t, f),
+            7 => self.with_nonzero_of::<D, R, 8>(span, t, f),
+            _ => {
+                let mut n = vec![D::zero(); self.degree + 1];
+                self.nonzero_into(span, t, &mut n);
+                f(&n)
+            }
+        }
+    }
+
+    /// [`BSplineBasis::with_nonzero`] for degree `L − 1` (the caller's match checked it).
+    #[inline(always)]
+    fn with_nonzero_of<D: DualNum<Primitive = f64> + Copy, R, const L: usize>(
+        &self,
+        span: usize,
+        t: D,
+        f: impl FnOnce(&[D]) -> R,
+    ) -> R {
+        let mut n = [D::zero(); L];
+        if D::NDERIV == 0 {
+            // plain numbers: the triangle on the span's knot window, every length a constant
+            let p = L - 1;
+            triangle(&self.knots.knots()[span + 1 - p..span + 1 + p], t, &mut n);
         } else {
-            let mut n = vec![D::zero(); len];
             self.nonzero_into(span, t, &mut n);
-            f(&n)
+        }
+        f(&n)
+    }
+
+    /// `f(g, n)` for each of `G` parameters `ts[g]` on their spans `spans[g]`, `n` the
+    /// `p + 1` basis values there: [`BSplineBasis::with_nonzero`] at `G` points at once, the
+    /// triangle run on [`Lanes`] (the same operations, so the same values bit for bit), so
+    /// that the points' divisions and knot loads overlap. The sparse batch paths.
+    #[inline]
+    pub(crate) fn with_nonzero_lanes<const G: usize>(
+        &self,
+        spans: &[usize; G],
+        ts: &[f64; G],
+        f: impl FnMut(usize, &[f64]),
+    ) {
+        match self.degree {
+            0 => self.lanes_of::<G, 1>(spans, ts, f),
+            1 => self.lanes_of::<G, 2>(spans, ts, f),
+            2 => self.lanes_of::<G, 3>(spans, ts, f),
+            3 => self.lanes_of::<G, 4>(spans, ts, f),
+            4 => self.lanes_of::<G, 5>(spans, ts, f),
+            5 => self.lanes_of::<G, 6>(spans, ts, f),
+            6 => self.lanes_of::<G, 7>(spans, ts, f),
+            7 => self.lanes_of::<G, 8>(spans, ts, f),
+            _ => {
+                let mut f = f;
+                for (g, (&span, &t)) in spans.iter().zip(ts).enumerate() {
+                    self.with_nonzero(span, t, |n| f(g, n));
+                }
+            }
+        }
+    }
+
+    /// [`BSplineBasis::with_nonzero_lanes`] for degree `L − 1` (the caller's match checked it).
+    #[inline(always)]
+    fn lanes_of<const G: usize, const L: usize>(
+        &self,
+        spans: &[usize; G],
+        ts: &[f64; G],
+        mut f: impl FnMut(usize, &[f64]),
+    ) {
+        let p = L - 1;
+        let k = self.knots.knots();
+        // the knot windows t_{ℓ+1−p} … t_{ℓ+p} of the G spans, lane g holding span g's
+        let mut w = [Lanes::<G>::splat(0.0); 14];
+        for (i, wi) in w[..2 * p].iter_mut().enumerate() {
+            for (x, &span) in wi.0.iter_mut().zip(spans) {
+                *x = k[span + 1 - p + i];
+            }
+        }
+        let mut n = [Lanes::<G>::splat(0.0); L];
+        triangle(&w[..2 * p], Lanes(*ts), &mut n);
+        for g in 0..G {
+            f(g, &Lanes::lane(&n, g));
         }
     }
 
@@ -295,13 +373,8 @@ impl BSplineBasis {
         assert!(span >= p && span < self.len(), "span {span} out of range");
         let k = self.knots.knots();
         if D::NDERIV == 0 {
-            // plain numbers: values only; a constant degree lets the compiler unroll it
-            match p {
-                1 => triangle(k, span, 1, t, out),
-                2 => triangle(k, span, 2, t, out),
-                3 => triangle(k, span, 3, t, out),
-                _ => triangle(k, span, p, t, out),
-            }
+            // plain numbers: values only, on the span's window of 2p knots
+            triangle(&k[span + 1 - p..span + 1 + p], t, out);
             return;
         }
         // the expansion point (the piece was picked by the span): any point of the span gives
@@ -567,27 +640,33 @@ fn derivatives_on_span(
     ders
 }
 
-/// The triangular scheme of *The NURBS Book* A2.2 on span `ℓ = span` for degree `p`: the
-/// non-zero `N_{ℓ−p,p}(t) … N_{ℓ,p}(t)` into `out`.
+/// The triangular scheme of *The NURBS Book* A2.2 on span `ℓ` for degree `p = out.len() − 1`:
+/// the non-zero `N_{ℓ−p,p}(t) … N_{ℓ,p}(t)` into `out`, from the span's knot window
+/// `w = t_{ℓ+1−p} … t_{ℓ+p}` (`2p` knots, `t_{ℓ+i} = w[p − 1 + i]`). With `out`'s length a
+/// constant of the caller the loops unroll and every index is known to be in bounds.
+///
+/// Generic over the number `D` and the knots `K`: plain and dual numbers on `f64` knots, and
+/// [`Lanes`] of parameters on lanes of knots (several points, each on its own span, at once).
 #[inline(always)]
-fn triangle<D: DualNum<Primitive = f64> + Copy>(
-    k: &[f64],
-    span: usize,
-    p: usize,
-    t: D,
-    out: &mut [D],
-) {
+fn triangle<D, K>(w: &[K], t: D, out: &mut [D])
+where
+    K: Copy + Sub<Output = K>,
+    f64: Div<K, Output = K>,
+    D: Copy + Zero + One + Neg<Output = D> + Add<K, Output = D> + Sub<K, Output = D>,
+    D: Mul<K, Output = D>,
+{
+    let p = out.len() - 1;
+    let w = &w[..2 * p];
     out[0] = D::one();
     for j in 1..=p {
         let mut saved = D::zero();
         for r in 0..j {
             // right = t_{ℓ+r+1} − t, left = t − t_{ℓ+1−j+r}; their sum is the knot difference
             // t_{ℓ+r+1} − t_{ℓ+1−j+r} ≥ t_{ℓ+1} − t_ℓ > 0 on a non-empty span: no 0/0
-            let temp = out[r] * (1.0 / (k[span + r + 1] - k[span + 1 + r - j]));
-            let right = -t + k[span + r + 1];
-            let left = t - k[span + 1 + r - j];
-            out[r] = saved + temp * right;
-            saved = temp * left;
+            let (hi, lo) = (w[p + r], w[p + r - j]);
+            let temp = out[r] * (1.0 / (hi - lo));
+            out[r] = saved + temp * (-t + hi);
+            saved = temp * (t - lo);
         }
         out[j] = saved;
     }

@@ -86,12 +86,27 @@ impl<const N: usize> BSplineCurve<N> {
         Self::try_new(self.basis.clone(), points)
     }
 
-    /// `Σ_{i=ℓ−p}^{ℓ} Pᵢ Nᵢ` for the non-zero basis values `n` of span `ℓ`.
+    /// `Σ_{i=ℓ−p}^{ℓ} Pᵢ Nᵢ` for the `p + 1` non-zero basis values `n` of span `ℓ`.
+    #[inline]
     fn combine<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, n: &[D]) -> SVector<D, N> {
-        let first = span - self.basis.degree();
+        // from n's length, so that a length known to the caller's code is known here too
+        let first = span + 1 - n.len();
         n.iter()
             .zip(&self.points[first..=span])
             .fold(SVector::zeros(), |acc, (&w, p)| acc + p.map(D::from) * w)
+    }
+
+    /// Reads the first and last control point of each span of a sparse block before its
+    /// basis values are computed, so that their cache misses overlap with that work instead
+    /// of stalling the sums that need them.
+    #[inline(always)]
+    fn touch(&self, spans: &[usize]) {
+        let p = self.basis.degree();
+        let sum: f64 = spans
+            .iter()
+            .map(|&s| self.points[s - p].sum() + self.points[s].sum())
+            .sum();
+        std::hint::black_box(sum);
     }
 
     /// `C(t)` on span `span` (its polynomial, extended beyond the span), any number type.
@@ -119,7 +134,9 @@ impl<const N: usize> BSplineCurve<N> {
     /// [`ParametricCurve::eval`] does. Above degree 32 no power form is made (see
     /// `horner::MAX_POWER_DEGREE`). A span's form is made each time at least four parameters
     /// in a row fall in it; sparse or unsorted parameters are evaluated point by point (the
-    /// basis on the stack, no allocation).
+    /// basis on the stack, no allocation), eight at a time side by side once a sparse run is
+    /// met (their spans found first, then their basis triangles computed together): the same
+    /// operations as [`ParametricCurve::eval`], so the same values bit for bit.
     pub fn eval_many(&self, ts: &[f64], out: &mut Vec<SVector<f64, N>>) {
         horner::by_degree!(self.basis.degree(), [N], self.eval_many_with(ts, out))
     }
@@ -148,7 +165,17 @@ impl<const N: usize> BSplineCurve<N> {
                 horner::safe(c.as_ref(), horner::max_norm(points)).then_some(c)
             },
             |c, s| horner::eval(c.as_ref(), s),
-            |span, t| self.eval_on_span(span, t),
+            (
+                |span, t| self.eval_on_span(span, t),
+                |spans, ts, out| {
+                    self.touch(spans);
+                    self.basis.with_nonzero_lanes(spans, ts, |g, n| {
+                        if let Some(o) = out.get_mut(g) {
+                            *o = self.combine(spans[g], n);
+                        }
+                    })
+                },
+            ),
         );
     }
 }
@@ -192,6 +219,12 @@ pub(crate) fn two_threads(queries: usize, pieces: usize) -> bool {
         }
 }
 
+/// Parameters that [`walk_spans`] evaluates point by point in one block once it meets a
+/// sparse run: their spans are found first (the knot loads of all of them in flight at
+/// once), then their points are computed side by side ([`crate::lanes::Lanes`]), so that
+/// independent points overlap instead of each waiting on the memory its span needs.
+pub(crate) const SPARSE_BLOCK: usize = 8;
+
 /// The fewest parameters in a span for which [`walk_spans`] forms the span's fast form;
 /// shorter runs (sparse or unsorted parameters) are evaluated point by point, which costs
 /// less than a form (its blossoming and power conversion are `O(p²)` per coordinate).
@@ -202,7 +235,9 @@ pub(crate) const FORM_MIN_RUN: usize = 4;
 /// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of at least
 /// [`FORM_MIN_RUN`] parameters in it (shorter runs are evaluated by `direct`), and `at(piece, (t − t_ℓ)/w)` evaluates each
 /// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
-/// evaluates each point. From [`EVAL_PARALLEL_MIN`] parameters ([`SPARSE_PARALLEL_MIN`] for
+/// evaluates each point; `block(spans, ts, out)` evaluates up to [`SPARSE_BLOCK`] sparse
+/// parameters `ts` on their `spans` into `out` (as `direct` each, bit for bit; `out` may be
+/// shorter than the block, whose tail then repeats a valid entry). From [`EVAL_PARALLEL_MIN`] parameters ([`SPARSE_PARALLEL_MIN`] for
 /// sparse ones, [`two_threads`]) the two halves of `ts` are
 /// walked on two threads; a span's data depend on the span alone, so the values are the
 /// same whatever the split.
@@ -213,11 +248,14 @@ pub(crate) fn walk_spans<T: Copy + Send, P>(
     zero: T,
     piece: impl Fn(usize) -> Option<P> + Sync,
     at: impl Fn(&P, f64) -> T + Sync,
-    direct: impl Fn(usize, f64) -> T + Sync,
+    (direct, block): (
+        impl Fn(usize, f64) -> T + Sync,
+        impl Fn(&[usize; SPARSE_BLOCK], &[f64; SPARSE_BLOCK], &mut [T]) + Sync,
+    ),
 ) {
     let parallel = two_threads(ts.len(), basis.len() - basis.degree());
     crate::parallel::fill_halves(ts, out, zero, parallel, |ts, out| {
-        walk_part(basis, ts, out, &piece, &at, &direct)
+        walk_part(basis, ts, out, &piece, &at, &direct, &block)
     });
 }
 
@@ -229,6 +267,7 @@ fn walk_part<T, P>(
     piece: &impl Fn(usize) -> Option<P>,
     at: &impl Fn(&P, f64) -> T,
     direct: &impl Fn(usize, f64) -> T,
+    block: &impl Fn(&[usize; SPARSE_BLOCK], &[f64; SPARSE_BLOCK], &mut [T]),
 ) {
     let mut cursor = SpanCursor::new(basis);
     let mut data = None;
@@ -239,7 +278,7 @@ fn walk_part<T, P>(
         cursor.advance(ts[i]);
         // the run of parameters that stay in this span (at least ts[i], which may be the
         // right end b or outside the domain), evaluated in one branch-free loop
-        let (lo, hi, inv) = (cursor.start(), cursor.hi, cursor.inv_width);
+        let (lo, hi) = (cursor.start(), cursor.hi);
         let run = 1 + ts[i + 1..]
             .iter()
             .position(|&t| !(lo <= t && t < hi))
@@ -248,10 +287,27 @@ fn walk_part<T, P>(
         i += run;
         if run < FORM_MIN_RUN && formed != Some(cursor.span()) {
             // a few parameters in a span (sparse or unsorted ones): point by point, the
-            // form would cost more than it saves
+            // form would cost more than it saves; the next parameters likely too, so a block
+            // of them is taken at once — their spans first, then their points in a loop
+            // without branches between them, so that the processor overlaps independent
+            // points (their divisions, their cache misses) instead of waiting on each
+            let span = cursor.span();
             for (o, &t) in slots.iter_mut().zip(chunk) {
-                *o = fallback(direct, cursor.span(), t);
+                *o = direct(span, t);
             }
+            let len = SPARSE_BLOCK.min(ts.len() - i);
+            if len == 0 {
+                continue;
+            }
+            // a short last block repeats its last parameter (evaluated, not written)
+            let (mut spans, mut params) = ([0usize; SPARSE_BLOCK], [ts[i + len - 1]; SPARSE_BLOCK]);
+            params[..len].copy_from_slice(&ts[i..i + len]);
+            for (s, &t) in spans.iter_mut().zip(&params) {
+                cursor.advance(t);
+                *s = cursor.span();
+            }
+            block(&spans, &params, &mut out[i..i + len]);
+            i += len;
             continue;
         }
         if formed != Some(cursor.span()) {
@@ -265,6 +321,8 @@ fn walk_part<T, P>(
             // evaluated as `ParametricCurve::eval` does — batch and single agree everywhere
             Some(d) => {
                 let first = usize::from(!(lo <= chunk[0] && chunk[0] <= hi));
+                // finite: knot gaps are at least f64::MIN_POSITIVE
+                let inv = 1.0 / (hi - lo);
                 if first == 1 {
                     slots[0] = fallback(direct, cursor.span(), chunk[0]);
                 }
@@ -300,8 +358,6 @@ struct SpanCursor<'a> {
     span: usize,
     lo: f64,
     hi: f64,
-    /// `1 / (hi − lo)`, finite: knot gaps are at least `f64::MIN_POSITIVE`.
-    inv_width: f64,
 }
 
 impl<'a> SpanCursor<'a> {
@@ -315,7 +371,6 @@ impl<'a> SpanCursor<'a> {
             span: 0,
             lo: 0.0,
             hi: 0.0,
-            inv_width: 0.0,
         };
         cursor.enter(basis.find_span(basis.domain().0));
         cursor
@@ -326,7 +381,6 @@ impl<'a> SpanCursor<'a> {
         self.span = span;
         self.lo = k[span];
         self.hi = k[span + 1];
-        self.inv_width = 1.0 / (self.hi - self.lo);
     }
 
     /// The current span `ℓ`.
