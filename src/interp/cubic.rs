@@ -298,8 +298,10 @@ impl<const N: usize> CubicSpline<N> {
     /// Evaluates at every `x` of `xs` into `out` (resized to `xs.len()`, former contents
     /// overwritten), writing `map(s(x))`. For sorted input the interval search costs a
     /// comparison or two per run of points in one piece, each piece's data are gathered once,
-    /// and each run is evaluated in one branch-free loop; from
-    /// [`crate::bspline::curve::EVAL_PARALLEL_MIN`] points the two halves of `xs` are
+    /// and each run is evaluated in one branch-free loop; a lone point in its piece starts a
+    /// block of [`SPARSE_BLOCK`] points whose intervals are found before their values. From
+    /// [`crate::bspline::curve::EVAL_PARALLEL_MIN`] points (8 192 when there are fewer than four
+    /// per piece, [`crate::bspline::curve::two_threads`]) the two halves of `xs` are
     /// evaluated on two threads (each point by the same arithmetic, so the values do not
     /// depend on the split). The same formula as [`CubicSpline::eval`].
     fn fill_values<T: Copy + Send>(
@@ -326,11 +328,27 @@ impl<const N: usize> CubicSpline<N> {
                     *o = map(piece.eval(x));
                 }
                 k += run;
+                if run == 1 {
+                    // a lone point in its piece (sparse or unsorted input): the next points
+                    // likely too, so a block of them is taken at once — their intervals
+                    // first, then their pieces, with no branch between the points, so that
+                    // their cache misses are in flight together instead of one by one
+                    let len = SPARSE_BLOCK.min(xs.len() - k);
+                    let mut at = [0usize; SPARSE_BLOCK];
+                    for (i, &x) in at.iter_mut().zip(&xs[k..k + len]) {
+                        *i = cursor.find(x);
+                    }
+                    for ((o, &x), &i) in out[k..k + len].iter_mut().zip(&xs[k..k + len]).zip(&at) {
+                        *o = map(self.piece(i).eval(x));
+                    }
+                    k += len;
+                }
             }
         };
-        // (a sparse point costs a few nanoseconds here, less than a B-spline's: the batch
-        // threshold holds for sparse points too)
-        let parallel = xs.len() >= crate::bspline::curve::EVAL_PARALLEL_MIN;
+        // sparse points (a few per piece or fewer) each wait on memory the previous ones did
+        // not bring (20 ns and more where the spline outgrows the caches), so they are worth
+        // two threads from fewer points than dense ones: the B-spline batches' rule
+        let parallel = crate::bspline::curve::two_threads(xs.len(), self.x.len() - 1);
         crate::parallel::fill_halves(xs, out, zero, parallel, fill);
     }
 
@@ -396,6 +414,10 @@ impl CubicSpline<1> {
         self.fill_values(xs, out, 0.0, |v| v.x);
     }
 }
+
+/// Points that [`CubicSpline::eval_many`] takes in one block once it meets a lone point in its
+/// piece: their intervals are found first, then their values.
+const SPARSE_BLOCK: usize = 8;
 
 /// One piece of a cubic spline in moment form,
 /// `s = y₀ v + y₁ u − [M₀ (1 + v) + M₁ (1 + u)] d e / 6` with `d = x − x₀`, `e = x₁ − x`,
