@@ -159,16 +159,6 @@ impl<const N: usize> NurbsCurve<N> {
             )
     }
 
-    /// The homogeneous point on span `span` at `t` (its polynomials, extended), any number type.
-    fn homogeneous_on_span<D: DualNum<Primitive = f64> + Copy>(
-        &self,
-        span: usize,
-        t: D,
-    ) -> (SVector<D, N>, D) {
-        self.basis
-            .with_nonzero(span, t, |n| self.homogeneous(span, n))
-    }
-
     /// The perspective projection `X / W` of a homogeneous point; `W > 0` since the weights
     /// are positive and the basis is a partition of unity.
     fn project<D: DualNum<Primitive = f64> + Copy>(
@@ -251,16 +241,7 @@ impl<const N: usize> NurbsCurve<N> {
                     horner::eval(den.as_ref(), s).x,
                 ))
             },
-            (
-                |span, t| Self::project(self.homogeneous_on_span(span, t)),
-                |spans, ts, out| {
-                    self.basis.with_nonzero_lanes(spans, ts, |g, n| {
-                        if let Some(o) = out.get_mut(g) {
-                            *o = Self::project(self.homogeneous(spans[g], n));
-                        }
-                    })
-                },
-            ),
+            (|span, n| Self::project(self.homogeneous(span, n)), |_| ()),
         );
     }
 }

@@ -9,6 +9,49 @@ use num_dual::DualNum;
 use num_traits::{One, Zero};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// `$body` with `$l` a constant `p + 1` (the count of non-zero basis values) for degrees
+/// `p = 0 … 7`, so that arrays and loops of that length are sized and unrolled at compile
+/// time; `$other` above.
+macro_rules! by_count {
+    ($p:expr, $l:ident => $body:expr, _ => $other:expr) => {
+        match $p {
+            0 => {
+                const $l: usize = 1;
+                $body
+            }
+            1 => {
+                const $l: usize = 2;
+                $body
+            }
+            2 => {
+                const $l: usize = 3;
+                $body
+            }
+            3 => {
+                const $l: usize = 4;
+                $body
+            }
+            4 => {
+                const $l: usize = 5;
+                $body
+            }
+            5 => {
+                const $l: usize = 6;
+                $body
+            }
+            6 => {
+                const $l: usize = 7;
+                $body
+            }
+            7 => {
+                const $l: usize = 8;
+                $body
+            }
+            _ => $other,
+        }
+    };
+}
+
 /// The normalised B-spline basis `{N_{i,p}}`, `i = 0 … n`, of degree `p` (order `m = p + 1`) on a
 /// knot vector `t₀ ≤ … ≤ t_{n+p+1}` (0-based; the slides count from 1).
 ///
@@ -258,21 +301,11 @@ impl BSplineBasis {
         t: D,
         f: impl FnOnce(&[D]) -> R,
     ) -> R {
-        match self.degree {
-            0 => self.with_nonzero_of::<D, R, 1>(span, t, f),
-            1 => self.with_nonzero_of::<D, R, 2>(span, t, f),
-            2 => self.with_nonzero_of::<D, R, 3>(span, t, f),
-            3 => self.with_nonzero_of::<D, R, 4>(span, t, f),
-            4 => self.with_nonzero_of::<D, R, 5>(span, t, f),
-            5 => self.with_nonzero_of::<D, R, 6>(span, t, f),
-            6 => self.with_nonzero_of::<D, R, 7>(span, t, f),
-            7 => self.with_nonzero_of::<D, R, 8>(span, t, f),
-            _ => {
-                let mut n = vec![D::zero(); self.degree + 1];
-                self.nonzero_into(span, t, &mut n);
-                f(&n)
-            }
-        }
+        by_count!(self.degree, L => self.with_nonzero_of::<D, R, L>(span, t, f), _ => {
+            let mut n = vec![D::zero(); self.degree + 1];
+            self.nonzero_into(span, t, &mut n);
+            f(&n)
+        })
     }
 
     /// [`BSplineBasis::with_nonzero`] for degree `L − 1` (the caller's match checked it).
@@ -305,22 +338,12 @@ impl BSplineBasis {
         ts: &[f64; G],
         f: impl FnMut(usize, &[f64]),
     ) {
-        match self.degree {
-            0 => self.lanes_of::<G, 1>(spans, ts, f),
-            1 => self.lanes_of::<G, 2>(spans, ts, f),
-            2 => self.lanes_of::<G, 3>(spans, ts, f),
-            3 => self.lanes_of::<G, 4>(spans, ts, f),
-            4 => self.lanes_of::<G, 5>(spans, ts, f),
-            5 => self.lanes_of::<G, 6>(spans, ts, f),
-            6 => self.lanes_of::<G, 7>(spans, ts, f),
-            7 => self.lanes_of::<G, 8>(spans, ts, f),
-            _ => {
-                let mut f = f;
-                for (g, (&span, &t)) in spans.iter().zip(ts).enumerate() {
-                    self.with_nonzero(span, t, |n| f(g, n));
-                }
+        by_count!(self.degree, L => self.lanes_of::<G, L>(spans, ts, f), _ => {
+            let mut f = f;
+            for (g, (&span, &t)) in spans.iter().zip(ts).enumerate() {
+                self.with_nonzero(span, t, |n| f(g, n));
             }
-        }
+        })
     }
 
     /// [`BSplineBasis::with_nonzero_lanes`] for degree `L − 1` (the caller's match checked it).
@@ -333,7 +356,8 @@ impl BSplineBasis {
     ) {
         let p = L - 1;
         let k = self.knots.knots();
-        // the knot windows t_{ℓ+1−p} … t_{ℓ+p} of the G spans, lane g holding span g's
+        // the knot windows t_{ℓ+1−p} … t_{ℓ+p} of the G spans, lane g holding span g's (2p
+        // knots, at most 14 for the degrees `by_count!` makes constant)
         let mut w = [Lanes::<G>::splat(0.0); 14];
         for (i, wi) in w[..2 * p].iter_mut().enumerate() {
             for (x, &span) in wi.0.iter_mut().zip(spans) {

@@ -96,24 +96,6 @@ impl<const N: usize> BSplineCurve<N> {
             .fold(SVector::zeros(), |acc, (&w, p)| acc + p.map(D::from) * w)
     }
 
-    /// Reads the first and last control point of each span of a sparse block before its
-    /// basis values are computed, so that their cache misses overlap with that work instead
-    /// of stalling the sums that need them.
-    #[inline(always)]
-    fn touch(&self, spans: &[usize]) {
-        let p = self.basis.degree();
-        let sum: f64 = spans
-            .iter()
-            .map(|&s| self.points[s - p].sum() + self.points[s].sum())
-            .sum();
-        std::hint::black_box(sum);
-    }
-
-    /// `C(t)` on span `span` (its polynomial, extended beyond the span), any number type.
-    fn eval_on_span<D: DualNum<Primitive = f64> + Copy>(&self, span: usize, t: D) -> SVector<D, N> {
-        self.basis.with_nonzero(span, t, |n| self.combine(span, n))
-    }
-
     /// Evaluates at every parameter of `ts` into `out` (replacing its contents), by the same formula as
     /// [`ParametricCurve::eval`]. The span search starts from the previous span, so sorted
     /// parameters cost a comparison or two each. Each span's polynomial is formed once, at any
@@ -166,15 +148,8 @@ impl<const N: usize> BSplineCurve<N> {
             },
             |c, s| horner::eval(c.as_ref(), s),
             (
-                |span, t| self.eval_on_span(span, t),
-                |spans, ts, out| {
-                    self.touch(spans);
-                    self.basis.with_nonzero_lanes(spans, ts, |g, n| {
-                        if let Some(o) = out.get_mut(g) {
-                            *o = self.combine(spans[g], n);
-                        }
-                    })
-                },
+                |span, n| self.combine(span, n),
+                |spans| read_ahead(&self.points, p, spans),
             ),
         );
     }
@@ -225,6 +200,18 @@ pub(crate) fn two_threads(queries: usize, pieces: usize) -> bool {
 /// independent points overlap instead of each waiting on the memory its span needs.
 pub(crate) const SPARSE_BLOCK: usize = 8;
 
+/// Reads the first and last control point of each of `spans` (degree `p`) before their basis
+/// values are computed, so that their cache misses overlap with that work instead of stalling
+/// the sums that need them (nothing is kept).
+#[inline(always)]
+pub(crate) fn read_ahead<const N: usize>(points: &[SVector<f64, N>], p: usize, spans: &[usize]) {
+    let sum: f64 = spans
+        .iter()
+        .map(|&s| points[s - p].sum() + points[s].sum())
+        .sum();
+    std::hint::black_box(sum);
+}
+
 /// The fewest parameters in a span for which [`walk_spans`] forms the span's fast form;
 /// shorter runs (sparse or unsorted parameters) are evaluated point by point, which costs
 /// less than a form (its blossoming and power conversion are `O(p²)` per coordinate).
@@ -234,10 +221,10 @@ pub(crate) const FORM_MIN_RUN: usize = 4;
 /// into `out` (resized to `ts.len()`, former contents overwritten; `zero` fills new slots
 /// before they are written): `piece(ℓ)` forms span `ℓ`'s data once per run of at least
 /// [`FORM_MIN_RUN`] parameters in it (shorter runs are evaluated by `direct`), and `at(piece, (t − t_ℓ)/w)` evaluates each
-/// point; where `piece` declines (`None`: its fast form would lose accuracy), `direct(ℓ, t)`
-/// evaluates each point; `block(spans, ts, out)` evaluates up to [`SPARSE_BLOCK`] sparse
-/// parameters `ts` on their `spans` into `out` (as `direct` each, bit for bit; `out` may be
-/// shorter than the block, whose tail then repeats a valid entry). From [`EVAL_PARALLEL_MIN`] parameters ([`SPARSE_PARALLEL_MIN`] for
+/// point; where `piece` declines (`None`: its fast form would lose accuracy), each point is
+/// `combine(ℓ, n)` of the span's basis values `n` at it — one at a time, or for a sparse
+/// block [`SPARSE_BLOCK`] at a time on lanes (the same values bit for bit), after
+/// `read_ahead(spans)` has read what the block's spans will need. From [`EVAL_PARALLEL_MIN`] parameters ([`SPARSE_PARALLEL_MIN`] for
 /// sparse ones, [`two_threads`]) the two halves of `ts` are
 /// walked on two threads; a span's data depend on the span alone, so the values are the
 /// same whatever the split.
@@ -248,14 +235,11 @@ pub(crate) fn walk_spans<T: Copy + Send, P>(
     zero: T,
     piece: impl Fn(usize) -> Option<P> + Sync,
     at: impl Fn(&P, f64) -> T + Sync,
-    (direct, block): (
-        impl Fn(usize, f64) -> T + Sync,
-        impl Fn(&[usize; SPARSE_BLOCK], &[f64; SPARSE_BLOCK], &mut [T]) + Sync,
-    ),
+    (combine, read_ahead): (impl Fn(usize, &[f64]) -> T + Sync, impl Fn(&[usize]) + Sync),
 ) {
     let parallel = two_threads(ts.len(), basis.len() - basis.degree());
     crate::parallel::fill_halves(ts, out, zero, parallel, |ts, out| {
-        walk_part(basis, ts, out, &piece, &at, &direct, &block)
+        walk_part(basis, ts, out, &piece, &at, &combine, &read_ahead)
     });
 }
 
@@ -266,9 +250,11 @@ fn walk_part<T, P>(
     out: &mut [T],
     piece: &impl Fn(usize) -> Option<P>,
     at: &impl Fn(&P, f64) -> T,
-    direct: &impl Fn(usize, f64) -> T,
-    block: &impl Fn(&[usize; SPARSE_BLOCK], &[f64; SPARSE_BLOCK], &mut [T]),
+    combine: &impl Fn(usize, &[f64]) -> T,
+    read_ahead: &impl Fn(&[usize]),
 ) {
+    // one point on its span, as `ParametricCurve::eval` evaluates it
+    let direct = |span: usize, t: f64| basis.with_nonzero(span, t, |n| combine(span, n));
     let mut cursor = SpanCursor::new(basis);
     let mut data = None;
     // the span whose fast form `data` holds (formed lazily: only for runs long enough)
@@ -306,7 +292,13 @@ fn walk_part<T, P>(
                 cursor.advance(t);
                 *s = cursor.span();
             }
-            block(&spans, &params, &mut out[i..i + len]);
+            read_ahead(&spans);
+            let slots = &mut out[i..i + len];
+            basis.with_nonzero_lanes(&spans, &params, |g, n| {
+                if let Some(o) = slots.get_mut(g) {
+                    *o = combine(spans[g], n);
+                }
+            });
             i += len;
             continue;
         }
@@ -324,7 +316,7 @@ fn walk_part<T, P>(
                 // finite: knot gaps are at least f64::MIN_POSITIVE
                 let inv = 1.0 / (hi - lo);
                 if first == 1 {
-                    slots[0] = fallback(direct, cursor.span(), chunk[0]);
+                    slots[0] = fallback(&direct, cursor.span(), chunk[0]);
                 }
                 for (o, &t) in slots[first..].iter_mut().zip(&chunk[first..]) {
                     *o = at(d, (t - lo) * inv);
@@ -332,7 +324,7 @@ fn walk_part<T, P>(
             }
             None => {
                 for (o, &t) in slots.iter_mut().zip(chunk) {
-                    *o = fallback(direct, cursor.span(), t);
+                    *o = fallback(&direct, cursor.span(), t);
                 }
             }
         }

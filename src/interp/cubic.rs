@@ -1,6 +1,7 @@
 //! Interpolating cubic splines with clamped, natural, periodic and anticyclic ends, built in
 //! O(n) (seed 001, "Spline cubiche di interpolazione"; seed 004 §2 for the anticyclic ends).
 
+use crate::bspline::curve::SPARSE_BLOCK;
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
 use crate::interp::param::Parametrization;
@@ -299,7 +300,7 @@ impl<const N: usize> CubicSpline<N> {
     /// overwritten), writing `map(s(x))`. For sorted input the interval search costs a
     /// comparison or two per run of points in one piece, each piece's data are gathered once,
     /// and each run is evaluated in one branch-free loop; a lone point in its piece starts a
-    /// block of [`SPARSE_BLOCK`] points whose intervals are found before their values. From
+    /// block of [`SPARSE_BLOCK`] points (as the B-spline batches) whose intervals are found before their values. From
     /// [`crate::bspline::curve::EVAL_PARALLEL_MIN`] points (8 192 when there are fewer than four
     /// per piece, [`crate::bspline::curve::two_threads`]) the two halves of `xs` are
     /// evaluated on two threads (each point by the same arithmetic, so the values do not
@@ -414,10 +415,6 @@ impl CubicSpline<1> {
         self.fill_values(xs, out, 0.0, |v| v.x);
     }
 }
-
-/// Points that [`CubicSpline::eval_many`] takes in one block once it meets a lone point in its
-/// piece: their intervals are found first, then their values.
-const SPARSE_BLOCK: usize = 8;
 
 /// One piece of a cubic spline in moment form,
 /// `s = y₀ v + y₁ u − [M₀ (1 + v) + M₁ (1 + u)] d e / 6` with `d = x − x₀`, `e = x₁ − x`,
