@@ -412,7 +412,8 @@ pub fn partials_on_grid_into<S: SurfaceDerivatives + Sync + ?Sized>(
     };
     let cols = t_nodes.len();
     let len = crate::error::size_product("surface grid nodes", s_nodes.len(), cols)?;
-    out.clear();
+    // every slot is written below: a buffer of the right length is reused as it is (not
+    // cleared first, which would write its megabytes once more)
     out.resize(len, zero);
     if cols == 0 {
         return Ok(());

@@ -83,7 +83,7 @@ impl BenchResult {
 /// | `nurbs-circle` | `8 k` + `16 k` |
 /// | `angular-curve`, `-pointwise` | `16 k` (2-D samples) |
 /// | `torus-grid`, `-1core` | `24 k²` (3-D points) |
-/// | `corner-data` | `96 k²` (point and three partials) |
+/// | `corner-data`, `-by-hand` | `96 k²` (point and three partials) |
 pub fn traffic(id: &str, size: usize) -> Option<u64> {
     let k = u64::try_from(size).ok()?;
     let line = 64u64;
@@ -99,7 +99,7 @@ pub fn traffic(id: &str, size: usize) -> Option<u64> {
         "nurbs-circle" => per(24),
         "angular-curve" | "angular-curve-pointwise" => per(16),
         "torus-grid" | "torus-grid-1core" => per(24)?.checked_mul(k),
-        "corner-data" => per(96)?.checked_mul(k),
+        "corner-data" | "corner-data-by-hand" => per(96)?.checked_mul(k),
         _ => None,
     }
 }
@@ -303,6 +303,39 @@ fn corner_data(k: usize) -> Result<Runner> {
     }))
 }
 
+/// The report's torus (`R = 2`, `r = 1`) with its partials written out by hand (the closed
+/// forms of [`Torus`]'s documentation, one `sin_cos` of `s` and one of `t` per node): the
+/// same twelve numbers as [`Torus`] without hyper-dual arithmetic — `corner-data`'s floor for
+/// any evaluation that calls libm per node.
+struct HandWrittenTorus;
+
+impl crate::surface::SurfaceDerivatives for HandWrittenTorus {
+    fn point(&self, s: f64, t: f64) -> Vector3<f64> {
+        self.partials(s, t).point
+    }
+
+    fn partials(&self, s: f64, t: f64) -> crate::surface::Partials {
+        let ((sin_s, cos_s), (sin_t, cos_t)) = (s.sin_cos(), t.sin_cos());
+        let ring = 2.0 + cos_t;
+        crate::surface::Partials {
+            point: Vector3::new(ring * cos_s, ring * sin_s, sin_t),
+            ds: Vector3::new(-ring * sin_s, ring * cos_s, 0.0),
+            dt: Vector3::new(-sin_t * cos_s, -sin_t * sin_s, cos_t),
+            dst: Vector3::new(sin_t * sin_s, -sin_t * cos_s, 0.0),
+        }
+    }
+}
+
+fn corner_data_by_hand(k: usize) -> Result<Runner> {
+    crate::error::samples("bench size", k)?;
+    let nodes = linspace(0.0, TAU, k);
+    let mut out = Vec::new();
+    Ok(Box::new(move || {
+        partials_on_grid_into(&HandWrittenTorus, &nodes, &nodes, &mut out)?;
+        Ok(black_box(&out).len())
+    }))
+}
+
 fn torus_grid_on(k: usize, parallel: bool) -> Result<Runner> {
     crate::error::samples("bench size", k)?;
     let samples = linspace(0.0, TAU, k);
@@ -488,7 +521,7 @@ fn symbolic_torus(_: usize) -> Result<Runner> {
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 20] = [
+pub const WORKLOADS: [Workload; 21] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
@@ -528,6 +561,14 @@ pub const WORKLOADS: [Workload; 20] = [
         size: 257,
         sweep: &[16, 32, 64, 128, 257, 512, 1024, 2048],
         setup: corner_data,
+    },
+    Workload {
+        id: "corner-data-by-hand",
+        description: "the same with the torus's partials written out by hand (libm sin_cos per node, no hyper-duals): the floor of corner-data's per-node evaluation",
+        unit: "nodes per side",
+        size: 257,
+        sweep: &[16, 32, 64, 128, 257, 512, 1024, 2048],
+        setup: corner_data_by_hand,
     },
     Workload {
         id: "torus-grid",
@@ -747,6 +788,7 @@ pub fn scaling_figure(results: &[BenchResult], peers: &[PeerPoint], machine: &st
         "patch-matrix",
         "patch-decasteljau",
         "corner-data",
+        "corner-data-by-hand",
         "torus-grid",
         "torus-grid-1core",
     ];
@@ -886,6 +928,32 @@ mod tests {
             let points = runner().unwrap_or_else(|e| panic!("{}: {e}", w.id));
             assert!(points > 0, "{}", w.id);
             assert_eq!(points, runner().expect("second run"), "{}", w.id);
+        }
+    }
+
+    /// The hand-written torus of `corner-data-by-hand` is the hyper-dual [`Torus`]'s
+    /// partials (so the two workloads compute the same numbers): within a few ulps of the
+    /// coordinate bound `R + r = 3`, at nodes over several turns.
+    #[test]
+    fn the_hand_written_torus_is_the_hyper_dual_one() {
+        use crate::surface::SurfaceDerivatives;
+        let tol = 8.0 * f64::EPSILON * 3.0;
+        for s in linspace(-20.0, 20.0, 41) {
+            for t in linspace(-7.0, 13.0, 37) {
+                let (a, b) = (
+                    Torus::default().partials(s, t),
+                    HandWrittenTorus.partials(s, t),
+                );
+                for (x, y) in [
+                    (a.point, b.point),
+                    (a.ds, b.ds),
+                    (a.dt, b.dt),
+                    (a.dst, b.dst),
+                ] {
+                    assert!((x - y).amax() <= tol, "({s}, {t}): {x} vs {y}");
+                }
+                assert_eq!(HandWrittenTorus.point(s, t), b.point);
+            }
         }
     }
 
