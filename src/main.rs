@@ -70,6 +70,16 @@ enum Command {
     ///
     /// Example: `splinelab formulas > corpus.jsonl`
     Formulas,
+    /// Write `OUT/site/index.html` (the default run writes it too): the notebooks' HTML
+    /// copies and the API documentation where `scripts/notebooks.sh --site` put them, every
+    /// figure with its id and caption, every table; opens from the file system.
+    ///
+    /// Example: `splinelab site --out out`, then open `out/site/index.html`
+    Site {
+        /// The run's output folder (its `figures/` and `tables/`).
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -138,6 +148,11 @@ fn sweep_all(
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
+    if let Some(Command::Site { out }) = &cli.command {
+        let index = splinelab::report::site::write_site(out)?;
+        say(format_args!("wrote {}", index.display()))?;
+        return Ok(());
+    }
     if let Some(Command::Formulas) = cli.command {
         for entry in splinelab::report::formula_corpus::corpus()? {
             say(entry.to_json())?;
@@ -202,6 +217,10 @@ fn run(cli: Cli) -> anyhow::Result<()> {
     .with_context(|| format!("regenerating outputs into {}", cli.out.display()))?;
     for path in &written {
         say(format_args!("wrote {}", path.display()))?;
+    }
+    if cli.only.is_empty() {
+        let index = splinelab::report::site::write_site(&cli.out)?;
+        say(format_args!("wrote {}", index.display()))?;
     }
     Ok(())
 }

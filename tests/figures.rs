@@ -224,6 +224,53 @@ fn a_3d_view_fills_the_canvas() {
     );
 }
 
+/// Issue 27: a 3-D figure is as tall as its fitted scene — no blank band under the plot —
+/// and the colour bar's name reads upwards beside the bar, level with its middle.
+#[test]
+fn a_3d_figure_has_no_blank_band_and_its_colour_bar_is_named_beside_it() {
+    let torus = splinelab::Torus::default();
+    let fig = Plot3d::new("torus")
+        .surface(&torus, &Rect::new(0.0, 7.0, 0.0, 7.0), 30)
+        .expect("draws")
+        .figure();
+    let (w, h) = fig.size();
+    assert_eq!(w, FIGURE_SIZE.0);
+    assert!(h < FIGURE_SIZE.1, "a wide scene trims the height: {h}");
+    let rgb = fig.to_rgb().expect("draws");
+    // the last row with anything drawn (tick labels are black, the box grey)
+    let inked_rows: Vec<usize> = pixels(&rgb)
+        .enumerate()
+        .filter(|(_, p)| p.iter().any(|&c| c < 200))
+        .map(|(k, _)| k / w as usize)
+        .collect();
+    let last = *inked_rows.iter().max().expect("ink");
+    assert!(
+        h as usize - last < 70,
+        "{} blank rows under the plot of a {h}-pixel figure",
+        h as usize - last
+    );
+    let svg = fig.to_svg().expect("svg");
+    let name = svg.find("height z").expect("the bar is named");
+    let tag = &svg[svg[..name].rfind("<text").expect("in a text element")..name];
+    assert!(tag.contains("rotate(270"), "the name reads upwards: {tag}");
+    // beside the bar: within the bar strip on the right, at mid-height
+    let attr = |key: &str| -> f64 {
+        let at = tag.find(&format!(" {key}=\"")).expect("attribute") + key.len() + 3;
+        tag[at..]
+            .split('"')
+            .next()
+            .expect("value")
+            .parse()
+            .expect("number")
+    };
+    assert!(attr("x") > 0.9 * w as f64, "x = {}", attr("x"));
+    assert!(
+        (attr("y") - h as f64 / 2.0).abs() < 0.15 * h as f64,
+        "y = {} of {h}",
+        attr("y")
+    );
+}
+
 #[test]
 fn a_users_surface_and_partition_are_drawn_and_studied() {
     // The "Try it" path of the notebooks: a closure with sin/exp on hyper-dual numbers, a

@@ -47,6 +47,30 @@ impl BenchResult {
         traffic(self.workload, self.size).map(|b| b as f64 / self.seconds)
     }
 
+    /// The run as a labelled one-row table (size, points, median seconds, points per
+    /// second) for a notebook.
+    pub fn html(&self) -> crate::report::notebook::Html {
+        crate::report::notebook::values(
+            self.workload,
+            &["size", "points", "median time (s)", "points / s"],
+            &[(
+                "one run",
+                &[
+                    self.size as f64,
+                    self.points as f64,
+                    self.seconds,
+                    self.throughput(),
+                ],
+            )],
+        )
+    }
+
+    /// Shows [`BenchResult::html`] in a notebook (the evcxr kernel calls this for a cell's
+    /// value).
+    pub fn evcxr_display(&self) {
+        self.html().evcxr_display();
+    }
+
     /// `{"workload": …, "size": …, "points": …, "seconds": …, "throughput": …}`, with
     /// `"bytes"` and `"bytes_per_second"` where [`traffic`] models the workload.
     pub fn to_json(&self) -> String {

@@ -65,8 +65,16 @@ impl From<Figure2d> for Figure {
 }
 
 impl From<Figure3d> for Figure {
+    /// At the default width, as tall as the fitted scene needs
+    /// ([`crate::report::render3d::fitted_height`]: no blank band above or below it).
     fn from(f: Figure3d) -> Self {
-        Self::new(Drawing::Scene(f))
+        let height = match ensure_font() {
+            Ok(()) => {
+                crate::report::render3d::fitted_height(&f.title, &f.scene, f.view, FIGURE_SIZE)
+            }
+            Err(_) => FIGURE_SIZE.1,
+        };
+        Self::new(Drawing::Scene(f)).with_size(FIGURE_SIZE.0, height)
     }
 }
 

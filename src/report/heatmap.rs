@@ -7,6 +7,7 @@ use crate::report::plot2d::Drawn;
 use crate::report::style::{colormap, FONT, LABEL_SIZE, TICK_SIZE, TITLE_SIZE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// How values map to colours.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -189,19 +190,28 @@ pub fn draw_color_bar<DB: DrawingBackend>(
     scale: ColorScale,
 ) -> Drawn<DB> {
     let steps = 100;
-    let h = bar.dim_in_pixel().1;
+    let (w, h) = bar.dim_in_pixel();
     let (top, bottom) = (h / 8, h / 8);
+    // the label reads upwards on the bar's right, centred on it, as an axis name does
+    let label_room = LABEL_SIZE + 16;
     let builder = |b: &mut ChartBuilder<DB>| {
         b.margin_top(top)
             .margin_bottom(bottom)
-            .margin_right(20)
-            .margin_left(10)
-            .y_label_area_size(80);
+            .margin_right(label_room)
+            .margin_left(4)
+            .y_label_area_size(64);
     };
-    let bar_label = (FONT, TICK_SIZE).into_font().color(&BLACK);
+    let bar_label = (FONT, LABEL_SIZE)
+        .into_font()
+        .transform(FontTransform::Rotate270)
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Center, VPos::Center));
     bar.draw(&Text::new(
         label.to_string(),
-        (10, (top / 2) as i32),
+        (
+            w.saturating_sub(label_room / 2) as i32,
+            (top + (h - top - bottom) / 2) as i32,
+        ),
         bar_label,
     ))?;
     match scale {

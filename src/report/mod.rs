@@ -8,7 +8,9 @@
 //! - [`table`](mod@table): a [`Table`] (DataFrame, title, notes) from any tabulation, error study or
 //!   convergence study; Markdown, HTML and CSV for any DataFrame.
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
-//!   formulas.
+//!   formulas, labelled values.
+//! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
+//!   the API documentation), opened from the file system.
 //! - [`seed000`], [`seed001`], [`seed003`]: each seed's outputs with the seed's data, listed
 //!   once in its `OUTPUTS`; [`outputs`] is their concatenation, which the CLI writes.
 //!
@@ -28,6 +30,7 @@ pub mod seed000;
 pub mod seed001;
 pub mod seed003;
 pub mod seed004;
+pub mod site;
 pub mod style;
 mod supersample;
 pub mod table;

@@ -37,7 +37,7 @@ impl std::fmt::Display for Html {
     }
 }
 
-fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -166,6 +166,15 @@ pub fn matrix4(title: &str, m: &Matrix4<f64>, row_labels: &[&str], col_labels: &
     labelled_matrices(title, row_labels, col_labels, &[(String::new(), rows)])
 }
 
+/// A few named rows of numbers as a table — `rows[k] = (label, values)`, a column per entry
+/// of `col_labels` — so that a cell shows what each number is instead of a tuple's `Debug`
+/// text: `notebook::values("ends", &["x", "y"], &[("P′(start)", &[1.0, 2.0])])`.
+pub fn values(title: &str, col_labels: &[&str], rows: &[(&str, &[f64])]) -> Html {
+    let labels: Vec<&str> = rows.iter().map(|r| r.0).collect();
+    let numbers = rows.iter().map(|r| r.1.to_vec()).collect();
+    labelled_matrices(title, &labels, col_labels, &[(String::new(), numbers)])
+}
+
 /// A point's partials `X, X_s, X_t, X_st` as a table: one row per partial, columns x, y, z.
 pub fn partials(p: &Partials) -> Html {
     let rows = [p.point, p.ds, p.dt, p.dst]
@@ -178,4 +187,41 @@ pub fn partials(p: &Partials) -> Html {
         &["x", "y", "z"],
         &[(String::new(), rows)],
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every label and number of [`values`] is in its table, in order, and a run of the
+    /// benchmark shows as such a table, never as its `Debug` text.
+    #[test]
+    fn values_are_labelled() {
+        let v = values(
+            "ends <1>",
+            &["x", "y"],
+            &[("P′(start)", &[1.5, -2.0]), ("P″(end)", &[0.0, 1e-14])],
+        );
+        for needle in [
+            "ends &lt;1&gt;",
+            "P′(start)",
+            "P″(end)",
+            "<th>x</th>",
+            "1.5",
+            "-2",
+            "1.00000e-14",
+        ] {
+            assert!(v.html.contains(needle), "{needle} in {}", v.html);
+        }
+        assert!(v.html.find("P′(start)") < v.html.find("P″(end)"));
+        let run = crate::report::bench::BenchResult {
+            workload: "patch-matrix",
+            size: 15,
+            points: 225,
+            seconds: 1.5e-6,
+        }
+        .html();
+        assert!(run.html.contains("patch-matrix") && run.html.contains("points / s"));
+        assert!(!run.text.contains("BenchResult"));
+    }
 }

@@ -285,6 +285,32 @@ pub fn draw_scene<DB: DrawingBackend>(
     scene: &Scene,
     view: View,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    lay_out(area, title, scene, view, true).map(|_| ())
+}
+
+/// The height a figure of `size` needs for `scene`: the scene is scaled to fill the plotting
+/// area's width or height, whichever binds first; where the width binds, the rows above and
+/// below the fitted scene would be blank, and this height leaves them out (the scene keeps
+/// its scale). `size.1` where nothing is left over, or the scene cannot be laid out.
+pub fn fitted_height(title: &str, scene: &Scene, view: View, size: (u32, u32)) -> u32 {
+    let mut svg = String::new();
+    let spare = {
+        let area = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        lay_out(&area, title, scene, view, false).unwrap_or(0)
+    };
+    // a few pixels kept for rounding
+    size.1 - spare.saturating_sub(4).min(size.1 / 2)
+}
+
+/// Lays `scene` out in `area` and, if `draw`, draws it; the plotting area's rows the fitted
+/// scene leaves blank (see [`fitted_height`]).
+fn lay_out<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    scene: &Scene,
+    view: View,
+    draw: bool,
+) -> Result<u32, DrawingAreaErrorKind<DB::ErrorType>> {
     let (area, bar) = match scene.height_bar {
         Some(_) => {
             let (a, b) = area.split_horizontally(area.dim_in_pixel().0.saturating_sub(BAR_WIDTH));
@@ -327,7 +353,7 @@ pub fn draw_scene<DB: DrawingBackend>(
         pb.into_matrix()
     });
     // fit: project the box corners and every point once, then scale and centre
-    let (fit, centre) = {
+    let (fit, centre, spare) = {
         let coord = chart.as_coord_spec();
         let corners = (0..8).map(|k| {
             Vector3::new(
@@ -356,8 +382,12 @@ pub fn draw_scene<DB: DrawingBackend>(
         let fit = (avail_w / (x1 - x0).max(1) as f64).min(avail_h / (y1 - y0).max(1) as f64);
         let screen = ((rx.start + rx.end) / 2, (ry.start + ry.end) / 2);
         let mid = ((x0 + x1) / 2 - screen.0, (y0 + y1) / 2 - screen.1);
-        (fit * view.scale, (screen, mid))
+        let spare = (avail_h - fit * view.scale * (y1 - y0).max(1) as f64).max(0.0);
+        (fit * view.scale, (screen, mid), spare as u32)
     };
+    if !draw {
+        return Ok(spare);
+    }
     let ((sx, sy), (mx, my)) = centre;
     chart.with_projection(|mut pb| {
         pb.yaw = view.yaw;
@@ -451,7 +481,7 @@ pub fn draw_scene<DB: DrawingBackend>(
         let range = axis_range(z0, z1.max(z0), 0.0).unwrap_or((0.0, 1.0));
         draw_color_bar(&bar, "height z", range, ColorScale::Linear)?;
     }
-    Ok(())
+    Ok(spare)
 }
 
 /// The triangle of an arrowhead of length `len` pixels at `b`, pointing from `a` to `b`;

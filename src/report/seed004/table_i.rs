@@ -53,8 +53,18 @@ fn pct(e: f64, size: f64) -> f64 {
 /// # Errors
 /// As [`study`]; an internal polars failure ([`crate::report::Error::Table`]).
 pub fn table() -> Result<Table> {
+    table_of(study()?)
+}
+
+/// [`table`] of a study a caller holds ([`comparison::table_i`]'s cells) — in a notebook,
+/// where each cell links its own copy of the library and [`study`]'s cache does not outlive
+/// the cell, a variable keeps the study for the table, [`figure_of`], [`cross_of`] and
+/// [`conclusions_of`].
+///
+/// # Errors
+/// An internal polars failure ([`crate::report::Error::Table`]).
+pub fn table_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i";
-    let cells = study()?;
     let (mut column, mut shape, mut method) = (vec![], vec![], vec![]);
     let (mut printed_param, mut rule, mut auto_param) = (vec![], vec![], vec![]);
     let (mut printed_n, mut printed_err, mut printed_ok) = (vec![], vec![], vec![]);
@@ -166,7 +176,14 @@ pub fn table() -> Result<Table> {
 /// # Errors
 /// As [`study`]; the methods' construction errors.
 pub fn figure() -> Result<Figure> {
-    let cells = study()?;
+    figure_of(study()?)
+}
+
+/// [`figure`] of a study a caller holds (see [`table_of`]).
+///
+/// # Errors
+/// The methods' construction errors.
+pub fn figure_of(cells: &[CellStudy]) -> Result<Figure> {
     let mut panels = Vec::with_capacity(36);
     // the paper's grid: rows are methods, columns shapes; TABLE_I is row by row
     for c in cells {
@@ -209,8 +226,16 @@ fn short_label(method: &Method) -> String {
 /// # Errors
 /// As [`study`] and [`cross_methods`]; an internal polars failure.
 pub fn cross() -> Result<Table> {
+    cross_of(study()?)
+}
+
+/// [`cross`] of a study a caller holds (see [`table_of`]).
+///
+/// # Errors
+/// As [`cross_methods`]; an internal polars failure.
+pub fn cross_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i-cross";
-    let rows = cross_methods(study()?)?;
+    let rows = cross_methods(cells)?;
     let df = frame(
         id,
         vec![
@@ -310,6 +335,16 @@ pub fn fewest_study() -> Result<&'static [(Job, ContourStudy)]> {
     if let Some(rows) = FEWEST.get() {
         return Ok(rows);
     }
+    let rows = contour_searches()?;
+    Ok(FEWEST.get_or_init(|| rows))
+}
+
+/// The searches of [`fewest_study`], computed anew (for a caller that keeps them: see
+/// [`table_of`]).
+///
+/// # Errors
+/// The errors of the letters' fonts and of the searches.
+pub fn contour_searches() -> Result<Vec<(Job, ContourStudy)>> {
     let coast = data::coastline();
     let mut jobs: Vec<Job> = Vec::new();
     for (v, figures) in LETTER_FIGURES.iter().enumerate() {
@@ -346,7 +381,7 @@ pub fn fewest_study() -> Result<&'static [(Job, ContourStudy)]> {
     for (job, r) in jobs.into_iter().zip(results) {
         rows.push((job, r?));
     }
-    Ok(FEWEST.get_or_init(|| rows))
+    Ok(rows)
 }
 
 /// The most points per contour the letters' and the coast's search tries.
@@ -360,9 +395,16 @@ static FEWEST: OnceLock<Vec<(Job, ContourStudy)>> = OnceLock::new();
 /// # Errors
 /// The errors of the letters' fonts and of the searches; an internal polars failure.
 pub fn letters_and_coast() -> Result<Table> {
+    letters_and_coast_of(fewest_study()?)
+}
+
+/// [`letters_and_coast`] of searches a caller holds ([`contour_searches`]; see [`table_of`]).
+///
+/// # Errors
+/// The errors of the decimated coast's measure; an internal polars failure.
+pub fn letters_and_coast_of(rows: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-fewest";
     let coast = data::coastline();
-    let rows = fewest_study()?;
     let mut names = vec![];
     let (mut methods, mut printed, mut ours, mut per, mut params) =
         (vec![], vec![], vec![], vec![], vec![]);
@@ -482,10 +524,16 @@ fn judged(hits: usize, of: usize, supported: f64, contradicted: f64) -> &'static
 /// As [`study`], [`cross_methods`], [`fewest_study`] and [`comparison::pieces_changed`]; an
 /// internal polars failure.
 pub fn conclusions() -> Result<Table> {
+    conclusions_of(study()?, fewest_study()?)
+}
+
+/// [`conclusions`] of studies a caller holds (see [`table_of`]).
+///
+/// # Errors
+/// As [`cross_methods`] and [`comparison::pieces_changed`]; an internal polars failure.
+pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-conclusions";
-    let cells = study()?;
     let cross = cross_methods(cells)?;
-    let fewest = fewest_study()?;
     let families = ["Angular", "Cardinal", "Cubic", "B-spline"];
     let mean = |family: &str| {
         let of: Vec<f64> = cells
