@@ -55,9 +55,9 @@ apt_install() {
     local sudo=()
     [ "$(id -u)" = 0 ] || sudo=(sudo)
     echo "notebooks: installing ${missing[*]} (apt)"
-    "${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null 2>&1 ||
+    "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null 2>&1 ||
         { "${sudo[@]}" apt-get update -qq >/dev/null 2>&1 &&
-          "${sudo[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null; }
+          "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null; }
 }
 if [ "${1:-}" != "--lab" ]; then
     apt_install mold chromium
