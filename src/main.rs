@@ -149,9 +149,7 @@ fn sweep_all(
 
 fn run(cli: Cli) -> anyhow::Result<()> {
     if let Some(Command::Site { out }) = &cli.command {
-        let index = splinelab::report::site::write_site(out)?;
-        say(format_args!("wrote {}", index.display()))?;
-        return Ok(());
+        return site(out);
     }
     if let Some(Command::Formulas) = cli.command {
         for entry in splinelab::report::formula_corpus::corpus()? {
@@ -219,8 +217,13 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         say(format_args!("wrote {}", path.display()))?;
     }
     if cli.only.is_empty() {
-        let index = splinelab::report::site::write_site(&cli.out)?;
-        say(format_args!("wrote {}", index.display()))?;
+        site(&cli.out)?;
     }
     Ok(())
+}
+
+/// Writes `out/site/` (the `site` command, and the end of the default run).
+fn site(out: &std::path::Path) -> anyhow::Result<()> {
+    let index = splinelab::report::site::write_site(out)?;
+    say(format_args!("wrote {}", index.display()))
 }
