@@ -271,6 +271,44 @@ fn a_3d_figure_has_no_blank_band_and_its_colour_bar_is_named_beside_it() {
     );
 }
 
+/// `fitted_height` on scenes that cannot be fitted or barely fit: empty, a NaN or infinite
+/// point, coordinates at the scene limit and beyond, a flat line, the smallest figure —
+/// always a height between half the figure and the whole, never a panic.
+#[test]
+fn fitted_heights_of_bad_scenes_stay_within_the_figure() {
+    use splinelab::report::render3d::{fitted_height, SCENE_LIMIT};
+    let marker = |at: Vector3<f64>| Marker {
+        at,
+        color: RGBColor(0, 0, 0),
+        radius: 3,
+    };
+    let scenes: Vec<Scene> = [
+        vec![],
+        vec![Vector3::new(f64::NAN, 0.0, 0.0)],
+        vec![Vector3::repeat(f64::INFINITY), Vector3::zeros()],
+        vec![Vector3::repeat(-SCENE_LIMIT), Vector3::repeat(SCENE_LIMIT)],
+        vec![Vector3::repeat(f64::MAX), Vector3::zeros()],
+        vec![Vector3::zeros(), Vector3::new(1.0, 0.0, 0.0)],
+        vec![Vector3::zeros(); 3],
+    ]
+    .into_iter()
+    .map(|points| Scene {
+        markers: points.into_iter().map(marker).collect(),
+        ..Scene::default()
+    })
+    .collect();
+    for scene in &scenes {
+        for size in [(64, 64), FIGURE_SIZE, (4000, 300)] {
+            let h = fitted_height("bad", scene, View::default(), size);
+            assert!(
+                h >= size.1 / 2 && h <= size.1,
+                "{size:?} → {h} for {:?}",
+                scene.markers.iter().map(|m| m.at).collect::<Vec<_>>()
+            );
+        }
+    }
+}
+
 #[test]
 fn a_users_surface_and_partition_are_drawn_and_studied() {
     // The "Try it" path of the notebooks: a closure with sin/exp on hyper-dual numbers, a

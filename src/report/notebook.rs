@@ -214,6 +214,20 @@ mod tests {
             assert!(v.html.contains(needle), "{needle} in {}", v.html);
         }
         assert!(v.html.find("P′(start)") < v.html.find("P″(end)"));
+        // no rows, rows of different lengths, non-finite values: shown as they are
+        assert!(values("none", &["x"], &[]).html.contains("none"));
+        let odd = values(
+            "odd",
+            &["x", "y"],
+            &[
+                ("a", &[f64::NAN]),
+                ("b", &[f64::INFINITY, -f64::MAX, 1.0]),
+                ("c", &[]),
+            ],
+        );
+        for needle in ["NaN", "inf", "-1.79769e308"] {
+            assert!(odd.html.contains(needle), "{needle} in {}", odd.html);
+        }
         let run = crate::report::bench::BenchResult {
             workload: "patch-matrix",
             size: 15,

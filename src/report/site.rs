@@ -256,5 +256,16 @@ mod tests {
                 && html.contains("doc/splinelab/index.html")
         );
         assert!(!html.contains("Not here yet"));
+        // an output folder that does not exist yet: a site listing everything as missing;
+        // one that is a file: an I/O error naming it, nothing written
+        let fresh = out.path().join("never-run");
+        let html = fs::read_to_string(write_site(&fresh).expect("site")).expect("index");
+        assert!(!html.contains("<img") && html.contains("not generated in this run"));
+        let file = out.path().join("a-file");
+        fs::write(&file, b"x").expect("write");
+        assert!(matches!(
+            write_site(&file),
+            Err(crate::report::Error::Io { .. })
+        ));
     }
 }
