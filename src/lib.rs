@@ -32,7 +32,9 @@
 //!
 //! # Features
 //!
-//! - `report` (default): the report layer, with polars and plotters.
+//! - `report` (default): the report layer — figures (plotters) and tables.
+//! - `polars` (default): tables to and from polars DataFrames (`report::Table::to_polars`,
+//!   `Frame::try_from(&DataFrame)`); implies `report`.
 //! - `cli` (default): the `splinelab` program (clap, anyhow); implies `report`.
 //!
 //! With `default-features = false` the crate is the mathematics alone: num-dual, nalgebra,

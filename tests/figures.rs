@@ -350,14 +350,7 @@ fn a_users_surface_and_partition_are_drawn_and_studied() {
     assert_eq!(tab.df.height(), 20);
     assert_eq!(tab.df.width(), 14);
     // the partials columns are the exact derivatives of the closure
-    let z_s = tab
-        .df
-        .column("z_s")
-        .expect("z_s")
-        .f64()
-        .expect("f64")
-        .get(7)
-        .expect("value");
+    let z_s = tab.df.column("z_s").expect("z_s").f64().expect("f64")[7].expect("value");
     let (s, t) = (1.5 * (7 / 4) as f64 / 4.0, (7 % 4) as f64 / 3.0);
     let exact = 2.0 * (2.0 * s).cos() * (-t * t).exp();
     assert!((z_s - exact).abs() < 1e-13, "{z_s} vs {exact}");
@@ -496,7 +489,11 @@ fn the_notebooks_try_it_helpers_hold_their_claims() {
     assert_eq!(seams.df.height(), 2 + 1, "two u-seams and one v-seam");
     let col = |name: &str| -> Vec<f64> {
         let c = seams.df.column(name).expect("column");
-        c.f64().expect("f64").into_no_null_iter().collect()
+        c.f64()
+            .expect("f64")
+            .iter()
+            .map(|v| v.expect("value"))
+            .collect()
     };
     for ((jx, jd), size) in col("max_jump_X")
         .into_iter()

@@ -145,7 +145,7 @@ fn torus_partials_table_shows_dual_equal_to_closed_form() {
     let worst = |name: &str| {
         let col = t.df.column(name).expect("column");
         (0..t.df.height())
-            .map(|i| col.get(i).expect("cell").extract::<f64>().expect("f64"))
+            .map(|i| col.f64().expect("f64")[i].expect("value"))
             .fold(0.0, f64::max)
     };
     let dual = worst("abs_difference");
@@ -155,13 +155,7 @@ fn torus_partials_table_shows_dual_equal_to_closed_form() {
     assert!(formula <= 1e-15, "largest |formula − dual| = {formula:e}");
     let text = t.df.column("formula").expect("formula column");
     let first: Vec<String> = (0..12)
-        .map(|i| {
-            text.get(i)
-                .expect("cell")
-                .get_str()
-                .expect("str")
-                .to_string()
-        })
+        .map(|i| text.text().expect("text")[i].clone().expect("value"))
         .collect();
     assert_eq!(
         first,
@@ -210,9 +204,9 @@ fn notebook_html_shows_every_row_and_escapes() {
 #[cfg(feature = "report")]
 #[test]
 fn csv_is_full_precision_and_quoted() {
-    use polars::prelude::{Column, DataFrame};
+    use splinelab::report::table::{Column, Frame};
     let x = [0.1 + 0.2, std::f64::consts::PI, -1.0e-300, 6.02214076e23];
-    let df = DataFrame::new_infer_height(vec![
+    let df = Frame::try_new(vec![
         Column::new("x".into(), x.to_vec()),
         Column::new(
             "label".into(),
@@ -239,5 +233,75 @@ fn csv_is_full_precision_and_quoted() {
         lines[2].ends_with(','),
         "a missing value is empty: {}",
         lines[2]
+    );
+}
+
+/// A frame of every kind of column, with missing cells, goes to polars and back unchanged,
+/// and a library table does too (its CSV byte for byte); a DataFrame of narrower polars types
+/// comes in with the kinds widened.
+#[cfg(feature = "polars")]
+#[test]
+fn frames_go_to_polars_and_back() {
+    use polars::prelude::{Column as PlColumn, DataFrame};
+    use splinelab::report::table::{self, Column, Frame, Values};
+    let frame = Frame::try_new(vec![
+        Column::new(
+            "f".into(),
+            vec![Some(0.1 + 0.2), None, Some(f64::NAN), Some(-0.0)],
+        ),
+        Column::new("i".into(), vec![Some(-3i64), Some(i64::MIN), None, Some(7)]),
+        Column::new("u".into(), vec![Some(u64::MAX), None, Some(0u64), Some(1)]),
+        Column::new("b".into(), vec![Some(true), Some(false), None, Some(true)]),
+        Column::new(
+            "t".into(),
+            vec![
+                Some("a, b".to_string()),
+                None,
+                Some(String::new()),
+                Some("ü".into()),
+            ],
+        ),
+    ])
+    .expect("frame");
+    let back = Frame::try_from(&frame.to_polars().expect("to polars")).expect("from polars");
+    // NaN ≠ NaN: compare the CSV text, which spells every cell
+    assert_eq!(
+        table::csv(&back).expect("csv"),
+        table::csv(&frame).expect("csv")
+    );
+    assert_eq!(back.names(), frame.names());
+    for (a, b) in back.columns().iter().zip(frame.columns()) {
+        assert_eq!(
+            std::mem::discriminant(a.values()),
+            std::mem::discriminant(b.values()),
+            "kind of {}",
+            a.name()
+        );
+    }
+    let t = tables::torus_partials().expect("table");
+    let df = t.to_polars().expect("to polars");
+    assert_eq!(df.shape(), t.df.shape());
+    assert_eq!(
+        table::csv(&Frame::try_from(&df).expect("back")).expect("csv"),
+        table::csv(&t.df).expect("csv")
+    );
+    let narrow = DataFrame::new_infer_height(vec![
+        PlColumn::new("a".into(), vec![1i32, -2]),
+        PlColumn::new("b".into(), vec![1u32, 2]),
+        PlColumn::new("c".into(), vec![0.5f32, 1.5]),
+    ])
+    .expect("df");
+    let f = Frame::try_from(&narrow).expect("frame");
+    assert_eq!(
+        f.column("a").expect("a").values(),
+        &Values::Int(vec![Some(1), Some(-2)])
+    );
+    assert_eq!(
+        f.column("b").expect("b").values(),
+        &Values::UInt(vec![Some(1), Some(2)])
+    );
+    assert_eq!(
+        f.column("c").expect("c").f64(),
+        Some(&[Some(0.5), Some(1.5)][..])
     );
 }

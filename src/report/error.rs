@@ -37,12 +37,13 @@ pub enum Error {
         /// What went wrong.
         message: String,
     },
-    /// A table could not be built or read (a polars error, as text).
+    /// A table could not be built (ragged or repeated columns) or converted to or from
+    /// polars (its error, as text).
     #[error("table {name}: {message}")]
     Table {
         /// The table's id or title.
         name: String,
-        /// What polars said.
+        /// What went wrong.
         message: String,
     },
     /// A text input (a data file, a peer's timings) could not be read: where and why.

@@ -1,12 +1,14 @@
-//! The report layer (feature `report`): figures (plotters) and tables (polars) from data, the
+//! The report layer (feature `report`): figures (plotters) and tables from data, the
 //! seeds' outputs as thin calls of them, output files and benchmark workloads.
 //!
 //! - [`draw`]: figures of the user's own objects — any surface on a domain (with patch
 //!   outlines, corner points, derivative arrows, control nets), curves in the plane and in
 //!   space with control polygons and tangents, bases, error maps and convergence plots for
 //!   any surface and partition, line and log plots of any series. Each returns a [`Figure`].
-//! - [`table`](mod@table): a [`Table`] (DataFrame, title, notes) from any tabulation, error study or
-//!   convergence study; Markdown, HTML and CSV for any DataFrame.
+//! - [`table`](mod@table): a [`Table`] (a [`frame::Frame`], title, notes) from any tabulation, error
+//!   study or convergence study; Markdown, HTML and CSV for any frame (and, with the
+//!   `polars` feature, for any polars DataFrame through `Frame::try_from`).
+//! - [`frame`]: named columns of numbers, integers, flags or text, the data of a table.
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas, labelled values.
 //! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
@@ -22,6 +24,7 @@ pub mod error;
 pub mod figure;
 mod files;
 pub mod formula_corpus;
+pub mod frame;
 pub mod heatmap;
 pub mod notebook;
 pub mod plot2d;

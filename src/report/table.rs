@@ -1,14 +1,16 @@
-//! Tables: a polars `DataFrame` with an id, a title and notes; Markdown, HTML and CSV for any
-//! DataFrame; and tables built from any tabulation, error study or convergence study.
+//! Tables: a [`Frame`] of named columns with an id, a title and notes; Markdown, HTML and
+//! CSV for any frame; and tables built from any tabulation, error study or convergence study.
+//! With the `polars` feature a table is one call from a polars `DataFrame`
+//! (`Table::to_polars`) and any DataFrame converts to a frame (`Frame::try_from`).
 
 use crate::domain::Rect;
 use crate::metrics::CoordErrors;
 use crate::report::error::{io_err, Error, Result};
 use crate::report::files::write_atomic;
+pub use crate::report::frame::{Cell, Column, Frame, FrameError, Values};
 use crate::study::{ConvergenceOrders, ConvergenceRow};
 use crate::surface::{partials_on_grid, SurfaceDerivatives};
 use nalgebra::Vector3;
-use polars::prelude::{AnyValue, Column, DataFrame};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -20,7 +22,7 @@ pub struct Table {
     /// One-line title.
     pub title: String,
     /// The data.
-    pub df: DataFrame,
+    pub df: Frame,
     /// What the columns mean and what follows from them.
     pub notes: Vec<String>,
 }
@@ -28,12 +30,12 @@ pub struct Table {
 /// The names of the three coordinates.
 pub const COORDS: [&str; 3] = ["x", "y", "z"];
 
-/// A DataFrame from columns, a polars error as [`Error::Table`] naming the table.
+/// A frame from columns, a [`FrameError`] as [`Error::Table`] naming the table.
 ///
 /// # Errors
 /// [`Error::Table`] if the columns differ in length or repeat a name.
-pub fn frame(name: &str, columns: Vec<Column>) -> Result<DataFrame> {
-    DataFrame::new_infer_height(columns).map_err(|e| Error::Table {
+pub fn frame(name: &str, columns: Vec<Column>) -> Result<Frame> {
+    Frame::try_new(columns).map_err(|e| Error::Table {
         name: name.to_string(),
         message: e.to_string(),
     })
@@ -41,7 +43,7 @@ pub fn frame(name: &str, columns: Vec<Column>) -> Result<DataFrame> {
 
 impl Table {
     /// A table without notes.
-    pub fn new(id: impl Into<String>, title: impl Into<String>, df: DataFrame) -> Self {
+    pub fn new(id: impl Into<String>, title: impl Into<String>, df: Frame) -> Self {
         Self {
             id: id.into(),
             title: title.into(),
@@ -59,7 +61,7 @@ impl Table {
     /// The table as Markdown: title, a pipe table (floats with 5 significant digits), notes.
     ///
     /// # Errors
-    /// [`Error::Table`] if polars cannot read a cell.
+    /// None today (see [`display_rows`]).
     pub fn to_markdown(&self) -> Result<String> {
         let mut md = format!("# {}\n\n", self.title);
         md.push_str(&markdown(&self.df)?);
@@ -72,11 +74,11 @@ impl Table {
         Ok(md)
     }
 
-    /// The table as an HTML fragment with every row and column (for notebooks, where polars'
-    /// text display would elide rows): title, table, notes.
+    /// The table as an HTML fragment with every row and column (for notebooks, where a text
+    /// display would elide rows): title, table, notes.
     ///
     /// # Errors
-    /// [`Error::Table`] if polars cannot read a cell.
+    /// None today (see [`display_rows`]).
     pub fn to_html(&self) -> Result<String> {
         let mut html = format!("<h4>{}</h4>\n", escape_html(&self.title));
         html.push_str(&html_table(&self.df)?);
@@ -102,8 +104,20 @@ impl Table {
         Ok(vec![csv_path, md_path])
     }
 
+    /// The data as a polars `DataFrame` (feature `polars`), for polars' queries.
+    ///
+    /// # Errors
+    /// [`Error::Table`] if polars refuses the columns.
+    #[cfg(feature = "polars")]
+    pub fn to_polars(&self) -> Result<polars::prelude::DataFrame> {
+        self.df.to_polars().map_err(|e| Error::Table {
+            name: self.id.clone(),
+            message: e.to_string(),
+        })
+    }
+
     /// Shows the table in a notebook as HTML (title, every row, notes); falls back to
-    /// polars' text display if a cell cannot be read.
+    /// plain text if the HTML cannot be made.
     pub fn evcxr_display(&self) {
         match self.to_html() {
             Ok(html) => println!("EVCXR_BEGIN_CONTENT text/html\n{html}\nEVCXR_END_CONTENT"),
@@ -113,12 +127,12 @@ impl Table {
 }
 
 /// Formats one cell for reading: floats with 5 significant digits, missing values as `—`.
-fn cell(v: &AnyValue) -> String {
+fn cell(v: Cell) -> String {
     match v {
-        AnyValue::Null => "—".into(),
-        AnyValue::Float64(x) => {
+        Cell::Null => "—".into(),
+        Cell::Float(x) => {
             let a = x.abs();
-            if *x == 0.0 {
+            if x == 0.0 {
                 "0".into()
             } else if !x.is_finite() {
                 x.to_string()
@@ -129,43 +143,33 @@ fn cell(v: &AnyValue) -> String {
                 format!("{x:.4e}")
             }
         }
-        AnyValue::Boolean(b) => if *b { "yes" } else { "no" }.into(),
-        AnyValue::String(s) => s.to_string(),
+        Cell::Bool(b) => if b { "yes" } else { "no" }.into(),
         other => other.to_string(),
     }
 }
 
-/// Column names and every row of a DataFrame as display strings.
+/// Column names and every row of a frame as display strings.
 ///
 /// # Errors
-/// [`Error::Table`] if polars cannot read a cell.
-pub fn display_rows(df: &DataFrame) -> Result<(Vec<String>, Vec<Vec<String>>)> {
-    let names = df
-        .get_column_names()
-        .iter()
-        .map(|n| n.to_string())
-        .collect();
+/// None today (kept for callers written against the fallible polars-backed version).
+pub fn display_rows(df: &Frame) -> Result<(Vec<String>, Vec<Vec<String>>)> {
+    let names = df.names().iter().map(|n| n.to_string()).collect();
     let rows = (0..df.height())
         .map(|i| {
             df.columns()
                 .iter()
-                .map(|c| {
-                    c.get(i).map(|v| cell(&v)).map_err(|e| Error::Table {
-                        name: c.name().to_string(),
-                        message: e.to_string(),
-                    })
-                })
+                .map(|c| c.get(i).map_or_else(String::new, cell))
                 .collect()
         })
-        .collect::<Result<_>>()?;
+        .collect();
     Ok((names, rows))
 }
 
-/// Any DataFrame as a Markdown pipe table.
+/// Any frame as a Markdown pipe table.
 ///
 /// # Errors
-/// [`Error::Table`] if polars cannot read a cell.
-pub fn markdown(df: &DataFrame) -> Result<String> {
+/// None today (see [`display_rows`]).
+pub fn markdown(df: &Frame) -> Result<String> {
     let (names, rows) = display_rows(df)?;
     let mut md = String::new();
     let _ = writeln!(md, "| {} |", names.join(" | "));
@@ -182,11 +186,11 @@ fn escape_html(text: &str) -> String {
         .replace('>', "&gt;")
 }
 
-/// Any DataFrame as an HTML `<table>` with every row and column.
+/// Any frame as an HTML `<table>` with every row and column.
 ///
 /// # Errors
-/// [`Error::Table`] if polars cannot read a cell.
-pub fn html_table(df: &DataFrame) -> Result<String> {
+/// None today (see [`display_rows`]).
+pub fn html_table(df: &Frame) -> Result<String> {
     let (names, rows) = display_rows(df)?;
     let mut html = String::from("<table>\n<thead><tr>");
     for n in &names {
@@ -204,23 +208,17 @@ pub fn html_table(df: &DataFrame) -> Result<String> {
     Ok(html)
 }
 
-/// Any DataFrame as CSV (RFC 4180): a header row, then one row per record; floats in the
+/// Any frame as CSV (RFC 4180): a header row, then one row per record; floats in the
 /// shortest form that reads back to the same `f64` (full precision), missing values empty,
 /// text quoted when it holds a comma, a quote or a line break.
 ///
-/// Written here rather than by polars' CSV writer, whose `csv` feature would bring in
-/// polars-io and polars-ops (13 more crates) for this one use.
-///
 /// # Errors
-/// [`Error::Table`] if polars cannot read a cell.
-pub fn csv(df: &DataFrame) -> Result<Vec<u8>> {
-    fn field(v: &AnyValue) -> String {
+/// None today (see [`display_rows`]).
+pub fn csv(df: &Frame) -> Result<Vec<u8>> {
+    fn field(v: Cell) -> String {
         let text = match v {
-            AnyValue::Null => String::new(),
-            AnyValue::Float64(x) => format!("{x:?}"),
-            AnyValue::Float32(x) => format!("{x:?}"),
-            AnyValue::Boolean(b) => b.to_string(),
-            AnyValue::String(s) => s.to_string(),
+            Cell::Null => String::new(),
+            Cell::Float(x) => format!("{x:?}"),
             other => other.to_string(),
         };
         if text.contains([',', '"', '\n', '\r']) {
@@ -231,34 +229,29 @@ pub fn csv(df: &DataFrame) -> Result<Vec<u8>> {
     }
     let mut out = String::new();
     let names: Vec<String> = df
-        .get_column_names()
-        .iter()
-        .map(|n| field(&AnyValue::String(n.as_str())))
+        .names()
+        .into_iter()
+        .map(|n| field(Cell::Text(n)))
         .collect();
     out.push_str(&names.join(","));
     out.push('\n');
     for i in 0..df.height() {
-        let row = df
+        let row: Vec<String> = df
             .columns()
             .iter()
-            .map(|c| {
-                c.get(i).map(|v| field(&v)).map_err(|e| Error::Table {
-                    name: c.name().to_string(),
-                    message: e.to_string(),
-                })
-            })
-            .collect::<Result<Vec<_>>>()?;
+            .map(|c| c.get(i).map_or_else(String::new, field))
+            .collect();
         out.push_str(&row.join(","));
         out.push('\n');
     }
     Ok(out.into_bytes())
 }
 
-/// Writes any DataFrame to `path` as CSV (through a temporary file renamed into place).
+/// Writes any frame to `path` as CSV (through a temporary file renamed into place).
 ///
 /// # Errors
-/// [`Error::Table`] if polars cannot write it, [`Error::Io`] if the file cannot be written.
-pub fn write_csv(df: &DataFrame, path: &Path) -> Result<()> {
+/// [`Error::Io`] if the file cannot be written.
+pub fn write_csv(df: &Frame, path: &Path) -> Result<()> {
     write_atomic(path, &csv(df)?)
 }
 
@@ -297,7 +290,7 @@ pub fn tabulation<S: SurfaceDerivatives + Sync + ?Sized>(
     for (suffix, get) in parts {
         for (k, axis) in COORDS.iter().enumerate() {
             let values: Vec<f64> = grid.as_slice().iter().map(|p| get(p)[k]).collect();
-            columns.push(Column::new(format!("{axis}{suffix}").into(), values));
+            columns.push(Column::new(format!("{axis}{suffix}"), values));
         }
     }
     let title = format!(
@@ -315,7 +308,7 @@ pub fn tabulation<S: SurfaceDerivatives + Sync + ?Sized>(
 /// (mean of per-patch matrix 2-norms), max-abs and RMS.
 ///
 /// # Errors
-/// [`Error::Table`] only on an internal polars failure.
+/// [`Error::Table`] only if the columns came out ragged (an internal error).
 pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> Result<Table> {
     let (mut case, mut coord) = (vec![], vec![]);
     let (mut norm, mut max_abs, mut rms) = (vec![], vec![], vec![]);
@@ -346,7 +339,7 @@ pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> R
 /// max-abs, RMS and the report's measure with the observed order against the previous row.
 ///
 /// # Errors
-/// [`Error::Table`] only on an internal polars failure.
+/// [`Error::Table`] only if the columns came out ragged (an internal error).
 pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Table> {
     let (mut n_col, mut h_col, mut coord) = (vec![], vec![], vec![]);
     // value and order (None on the first row, which has no previous row) of each measure
@@ -378,7 +371,7 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
     for (q, (name, _, _)) in measures.iter().enumerate() {
         columns.push(Column::new((*name).into(), std::mem::take(&mut values[q])));
         columns.push(Column::new(
-            format!("order_{name}").into(),
+            format!("order_{name}"),
             std::mem::take(&mut orders[q]),
         ));
     }
@@ -395,8 +388,8 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
 /// that derivative for scale. C¹ interpolation makes both jumps zero up to rounding.
 ///
 /// # Errors
-/// [`crate::Error::TooFewSamples`] if `samples < 2`; [`Error::Table`] only on an internal
-/// polars failure.
+/// [`crate::Error::TooFewSamples`] if `samples < 2`; [`Error::Table`] only if the
+/// columns came out ragged (an internal error).
 pub fn seam_continuity(
     spline: &crate::hermite::spline_surface::HermiteSpline,
     samples: usize,

@@ -3720,8 +3720,8 @@ mod report {
     // table: frames, Markdown, HTML, CSV, files and the tables built from studies
     // -----------------------------------------------------------------------------------------
 
-    fn extreme_frame() -> Result<polars::prelude::DataFrame, String> {
-        use polars::prelude::Column;
+    fn extreme_frame() -> Result<table::Frame, String> {
+        use table::Column;
         ok(table::frame(
             "extreme",
             vec![
@@ -3746,7 +3746,7 @@ mod report {
     }
 
     fn table_cases() -> Vec<Case> {
-        use polars::prelude::Column;
+        use table::Column;
         vec![
             case("table::frame_mismatched_lengths", || {
                 expect_err!(
@@ -3771,6 +3771,44 @@ mod report {
                     ),
                     RError::Table { .. }
                 )
+            }),
+            case("frame::try_new_ragged_third_column", || {
+                let got = table::Frame::try_new(vec![
+                    Column::new("a".into(), vec![1.0, 2.0]),
+                    Column::new("b".into(), vec!["x", "y"]),
+                    Column::new("c".into(), vec![Some(true)]),
+                ]);
+                match got {
+                    Err(table::FrameError::Ragged {
+                        name,
+                        len: 1,
+                        height: 2,
+                        ..
+                    }) if name == "c" => Ok(()),
+                    other => Err(format!("{other:?}")),
+                }
+            }),
+            case("frame::try_new_names_repeated_apart", || {
+                let got = table::Frame::try_new(vec![
+                    Column::new("a".into(), vec![1u32]),
+                    Column::new("b".into(), vec![2i64]),
+                    Column::new("a".into(), vec![3usize]),
+                ]);
+                match got {
+                    Err(table::FrameError::DuplicateName(n)) if n == "a" => Ok(()),
+                    other => Err(format!("{other:?}")),
+                }
+            }),
+            case("frame::try_new_zero_rows", || {
+                let f = ok(table::Frame::try_new(vec![
+                    Column::new("a".into(), Vec::<f64>::new()),
+                    Column::new("b".into(), Vec::<Option<String>>::new()),
+                ]))?;
+                ensure!(f.shape() == (0, 2), "{:?}", f.shape());
+                ensure!(f.columns()[0].get(0).is_none(), "a cell past the end");
+                let csv = ok(table::csv(&f))?;
+                ensure!(csv == b"a,b\n", "{:?}", String::from_utf8_lossy(&csv));
+                Ok(())
             }),
             case("table::frame_of_nothing", || {
                 let df = ok(table::frame("empty", vec![]))?;

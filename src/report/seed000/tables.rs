@@ -1,4 +1,4 @@
-//! The report's tables as polars DataFrames, computed from scratch.
+//! The report's tables, computed from scratch.
 
 use crate::bezier::codice7::report_codice7_net;
 use crate::bezier::patch::BezierPatch;
@@ -6,11 +6,11 @@ use crate::domain::Rect;
 use crate::hermite::patch::HermitePatch;
 use crate::report::error::Result;
 use crate::report::table::{self, frame, Table, COORDS};
+use crate::report::table::{Column, Frame};
 use crate::seeds::seed000::{agrees_to_printed, PrintedRow, T3, T6};
 use crate::study::{convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC};
 use crate::surface::Torus;
 use nalgebra::Vector3;
-use polars::prelude::{Column, DataFrame};
 
 /// What the comparison of the printed value with the two reproductions shows.
 fn verdict(listing_agrees: bool, ours_agrees: bool) -> &'static str {
@@ -25,7 +25,7 @@ fn verdict(listing_agrees: bool, ours_agrees: bool) -> &'static str {
 /// Rows of an error table (T3 or T6): for every printed case and coordinate, the printed
 /// value, the report's listing run literally, our value by the Hermite matrix form and by
 /// de Casteljau on the correct net, max-abs and RMS.
-fn error_table(id: &'static str, printed: &[PrintedRow]) -> Result<DataFrame> {
+fn error_table(id: &'static str, printed: &[PrintedRow]) -> Result<Frame> {
     let torus = Torus::default();
     let mut case = Vec::new();
     let (mut ns, mut ms, mut coord, mut printed_col) = (vec![], vec![], vec![], vec![]);

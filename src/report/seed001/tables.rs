@@ -1,4 +1,4 @@
-//! Tables of seed 001, the lecture slides on splines, as polars DataFrames computed from scratch.
+//! Tables of seed 001, the lecture slides on splines, as tables computed from scratch.
 
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
@@ -10,11 +10,11 @@ use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Result;
+use crate::report::table::Column;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed000::agrees_to_printed;
 use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
-use polars::prelude::Column;
 
 /// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
 ///

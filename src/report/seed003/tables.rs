@@ -1,4 +1,4 @@
-//! Tables of seed 003, the lecture notes on curves, as polars DataFrames computed from scratch.
+//! Tables of seed 003, the lecture notes on curves, as tables computed from scratch.
 
 use crate::bezier::bernstein::bernstein_sum;
 use crate::bezier::de_casteljau::{de_casteljau, de_casteljau_recursive};
@@ -9,10 +9,10 @@ use crate::bspline::basis::BSplineBasis;
 use crate::bspline::knots::KnotVector;
 use crate::domain::linspace;
 use crate::report::error::Result;
+use crate::report::table::Column;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed003 as data;
 use nalgebra::Vector2;
-use polars::prelude::Column;
 
 /// Seed 003's de Casteljau examples (`u = 0.3, 0.5, 0.7`): recursive as printed vs iterative
 /// vs Bernstein sum.

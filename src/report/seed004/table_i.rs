@@ -13,10 +13,10 @@ use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::plot2d::Figure2d;
 use crate::report::seed004::letters::letter_a;
+use crate::report::table::Column;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed004::{self as data, LETTER_FIGURES};
 use crate::shapes::TOLERANCE_FRACTION;
-use polars::prelude::Column;
 use std::sync::OnceLock;
 
 static STUDY: OnceLock<Vec<CellStudy>> = OnceLock::new();
