@@ -110,6 +110,11 @@ TOML
 # naming the folder of libstd (rustc --print target-libdir) works wherever the state lives.
 export LD_LIBRARY_PATH="$(rustc --print target-libdir)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
+# The kernel's crate resolves its dependencies offline (`:offline 1` in init.evcxr): online,
+# evcxr's `cargo metadata` after the setup cell's `:dep` asks the registry again and takes
+# about 2 s more of the first output. Every crate it needs is in this repository's lock file.
+cargo fetch --locked --quiet
+
 # 4. Interactive: JupyterLab with the same kernel, caches and library path; evcxr's defaults
 # for panics (variables kept) instead of the headless run's.
 if [ "${1:-}" = "--lab" ]; then
