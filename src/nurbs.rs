@@ -201,12 +201,7 @@ impl<const N: usize> NurbsCurve<N> {
                 if p > horner::MAX_POWER_DEGREE {
                     return None;
                 }
-                let (mut tmp, mut tmp_w, mut hom, mut hom_w) = (
-                    C::zeros(p + 1),
-                    W::zeros(p + 1),
-                    C::zeros(p + 1),
-                    W::zeros(p + 1),
-                );
+                let (mut hom, mut hom_w) = (C::zeros(p + 1), W::zeros(p + 1));
                 let (points, weights) =
                     (&self.points[span - p..=span], &self.scaled[span - p..=span]);
                 for (((h, hw), pt), &w) in hom
@@ -219,13 +214,8 @@ impl<const N: usize> NurbsCurve<N> {
                     *h = pt * w;
                     hw.x = w;
                 }
-                let (mut num, mut den) = (C::zeros(p + 1), W::zeros(p + 1));
-                self.basis
-                    .span_bezier(span, hom.as_ref(), tmp.as_mut(), num.as_mut());
-                self.basis
-                    .span_bezier(span, hom_w.as_ref(), tmp_w.as_mut(), den.as_mut());
-                horner::bezier_to_power(num.as_mut());
-                horner::bezier_to_power(den.as_mut());
+                let num: C = self.basis.span_power(span, hom.as_ref())?;
+                let den: W = self.basis.span_power(span, hom_w.as_ref())?;
                 let scale = horner::max_norm(points);
                 let w_min = weights.iter().copied().fold(f64::INFINITY, f64::min);
                 // the denominator keeps its relative accuracy (so it stays positive, whatever

@@ -232,6 +232,26 @@ impl BSplineBasis {
         }
     }
 
+    /// The power form of the piece of `points` (the `p + 1` control points of span `span`)
+    /// in the span's scaled variable: its Bézier points ([`BSplineBasis::span_bezier`]) turned
+    /// into power coefficients (`horner::bezier_to_power`); `None` above
+    /// `horner::MAX_POWER_DEGREE`, where no power form is made. One path for the B-spline
+    /// curve's points and the NURBS curve's numerator and denominator.
+    pub(crate) fn span_power<C: crate::horner::Coefficients<N>, const N: usize>(
+        &self,
+        span: usize,
+        points: &[SVector<f64, N>],
+    ) -> Option<C> {
+        let p = self.degree;
+        if p > crate::horner::MAX_POWER_DEGREE {
+            return None;
+        }
+        let (mut tmp, mut c) = (C::zeros(p + 1), C::zeros(p + 1));
+        self.span_bezier(span, points, tmp.as_mut(), c.as_mut());
+        crate::horner::bezier_to_power(c.as_mut());
+        Some(c)
+    }
+
     /// The Bézier points `b₀ … b_p` (into `out`) of the piece on span `ℓ = span` of the curve
     /// whose control points on the span are `points = P_{ℓ−p} … P_ℓ`: on `[a, b] = [t_ℓ, t_{ℓ+1}]`,
     /// `Σᵢ Pᵢ N_{i,p}(t) = Σₖ bₖ Bₖᵖ(s)`, `s = (t − a)/(b − a)`.

@@ -136,14 +136,8 @@ impl<const N: usize> BSplineCurve<N> {
             out,
             SVector::zeros(),
             |span| {
-                if p > horner::MAX_POWER_DEGREE {
-                    return None;
-                }
                 let points = &self.points[span - p..=span];
-                let (mut tmp, mut c) = (C::zeros(p + 1), C::zeros(p + 1));
-                self.basis
-                    .span_bezier(span, points, tmp.as_mut(), c.as_mut());
-                horner::bezier_to_power(c.as_mut());
+                let c: C = self.basis.span_power(span, points)?;
                 horner::safe(c.as_ref(), horner::max_norm(points)).then_some(c)
             },
             |c, s| horner::eval(c.as_ref(), s),
