@@ -22,7 +22,7 @@ fn main() -> std::result::Result<(), splinelab::report::Error> {
     table::tabulation(&mine, &rect, 3, 3)?.write(dir)?;
     // 05: a partition of one's own, the patches, the seams, the error map
     let torus = Torus::default();
-    let spline = HermiteSpline::try_from_surface(
+    let spline = HermiteSurface::try_from_surface(
         &torus,
         Partition::try_new(vec![0.0, 0.2, 0.7, 1.0])?,
         Partition::try_new(vec![0.0, 0.4, 1.0])?,

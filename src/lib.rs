@@ -9,7 +9,7 @@
 //!   [`SurfaceDerivatives`] gives `X, X_s, X_t, X_st` exactly ([`Torus`], [`Sphere`],
 //!   [`ExpSurface`], [`FnSurface`] for closures).
 //! - [`HermitePatch`] (`H(s)ᵀ C H(t)`), [`BezierPatch`] (Bernstein and de Casteljau),
-//!   [`HermiteSpline`] (piecewise surfaces over partitions).
+//!   [`HermiteSurface`] (piecewise surfaces over partitions).
 //! - [`metrics`] and [`study`]: the report's error measure (MATLAB `norm`), max-abs, RMS,
 //!   the §3/§6 experiments and a convergence study.
 //! - [`ParametricCurve`]: a curve written once, generic over the number type, with exact
@@ -94,7 +94,9 @@ pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::curve::HermiteCurve;
 pub use hermite::patch::HermitePatch;
+#[allow(deprecated)]
 pub use hermite::spline_surface::HermiteSpline;
+pub use hermite::spline_surface::HermiteSurface;
 pub use interp::angular::{
     circumcircle, guide_point, AngularSpline, HermiteMidpoint, InflectionPoint, InflectionRule,
     MirrorMidpoint, PieceKind,

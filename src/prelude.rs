@@ -9,7 +9,7 @@
 //! let saddle = FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s, t, s * t.sin()));
 //! let d = saddle.partials(0.5, 0.25);
 //! assert!((d.dst.z - 0.25f64.cos()).abs() < 1e-15); // ∂²(s sin t)/∂s∂t = cos t
-//! let spline = HermiteSpline::try_from_surface(
+//! let spline = HermiteSurface::try_from_surface(
 //!     &saddle,
 //!     Partition::uniform(0.0, 1.0, 4).unwrap(),
 //!     Partition::uniform(0.0, 1.0, 4).unwrap(),
@@ -23,13 +23,16 @@ pub use num_dual::{Dual2_64, Dual3_64, Dual64, DualNum, HyperDual64};
 
 pub use crate::{
     AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline, CubicSpline,
-    EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSpline, Interval,
+    EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSurface, Interval,
     KnotVector, Lagrange, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
     Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
 };
 // formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and
 // `surface!`, a user surface written once for numbers and formulas alike
 pub use crate::{surface, symbolic};
+// the old name of `HermiteSurface`, for one release (deprecated: a use warns)
+#[allow(deprecated)]
+pub use crate::HermiteSpline;
 
 #[cfg(feature = "report")]
 pub use crate::report::{

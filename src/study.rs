@@ -4,7 +4,7 @@ use crate::bezier::codice7::report_codice7_net;
 use crate::bezier::patch::BezierPatch;
 use crate::domain::{Partition, Rect};
 use crate::error::{Error, Result};
-use crate::hermite::spline_surface::HermiteSpline;
+use crate::hermite::spline_surface::HermiteSurface;
 use crate::metrics::{CoordErrors, ErrorAccumulator};
 use crate::surface::{tabulate, SurfaceDerivatives};
 use nalgebra::Vector3;
@@ -52,7 +52,7 @@ impl PatchEvaluation {
 ///
 /// # Errors
 /// [`Error::TooFewSamples`] if `prec < 2`; [`Error::TooLarge`] for more patches or samples
-/// than [`crate::error::MAX_ELEMENTS`]; the errors of [`HermiteSpline::try_from_surface`],
+/// than [`crate::error::MAX_ELEMENTS`]; the errors of [`HermiteSurface::try_from_surface`],
 /// of [`tabulate`] and of [`ErrorAccumulator::add_patch`] (a surface that is NaN or overflows
 /// anywhere on the samples is an error, never a hang or a NaN measure).
 pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
@@ -62,7 +62,7 @@ pub fn spline_errors<S: SurfaceDerivatives + Sync + ?Sized>(
     prec: usize,
     eval: PatchEvaluation,
 ) -> Result<CoordErrors> {
-    let spline = HermiteSpline::try_from_surface(surface, u, v)?;
+    let spline = HermiteSurface::try_from_surface(surface, u, v)?;
     let (n, m) = spline.patch_counts();
     let mut acc = ErrorAccumulator::new();
     for i in 0..n {

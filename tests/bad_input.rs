@@ -66,7 +66,7 @@ use splinelab::{
     matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors,
     tabulate, uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch,
     Blending, CardinalSpline, CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface,
-    Grid, HermiteCurve, HermitePatch, HermiteSpline, Interval, KnotVector, Lagrange, NodeFamily,
+    Grid, HermiteCurve, HermitePatch, HermiteSurface, Interval, KnotVector, Lagrange, NodeFamily,
     NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation,
     PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
 };
@@ -701,7 +701,7 @@ fn surface_cases() -> Vec<Case> {
 }
 
 // ---------------------------------------------------------------------------------------------
-// hermite: hermite_basis, HermitePatch, HermiteSpline
+// hermite: hermite_basis, HermitePatch, HermiteSurface
 // ---------------------------------------------------------------------------------------------
 
 fn hermite_cases() -> Vec<Case> {
@@ -909,7 +909,7 @@ fn hermite_cases() -> Vec<Case> {
             let u = ok(Partition::try_new(vec![0.0, 0.5, 1.0]))?;
             let v = ok(Partition::try_new(vec![0.0, 1.0]))?;
             expect_err!(
-                HermiteSpline::try_from_surface(&spot, u, v),
+                HermiteSurface::try_from_surface(&spot, u, v),
                 Error::NonFiniteSurface { s, t } if *s == 0.5 && *t == 0.0
             )
         }),
@@ -919,7 +919,7 @@ fn hermite_cases() -> Vec<Case> {
             let u = ok(Partition::try_new(vec![0.0, 0.5, 1.0]))?;
             let v = ok(Partition::try_new(vec![0.0, 1.0]))?;
             expect_err!(
-                HermiteSpline::try_from_node_partials(&nodes, u, v),
+                HermiteSurface::try_from_node_partials(&nodes, u, v),
                 Error::ShapeMismatch {
                     left_rows: 2,
                     left_cols: 2,
@@ -935,7 +935,7 @@ fn hermite_cases() -> Vec<Case> {
             let u = ok(Partition::uniform(0.0, 1.0, 2))?;
             let v = ok(Partition::uniform(0.0, 1.0, 2))?;
             expect_err!(
-                HermiteSpline::try_from_node_partials(&nodes, u, v),
+                HermiteSurface::try_from_node_partials(&nodes, u, v),
                 Error::NonFinite { .. }
             )
         }),
@@ -955,7 +955,7 @@ fn hermite_cases() -> Vec<Case> {
                 let nodes = Grid::from_vec(3, 3, data).ok_or("grid")?;
                 let u = ok(Partition::try_new(vec![0.0, 0.25, 1.0]))?;
                 let v = ok(Partition::try_new(vec![0.0, 0.75, 1.0]))?;
-                let sp = ok(HermiteSpline::try_from_node_partials(&nodes, u, v))?;
+                let sp = ok(HermiteSurface::try_from_node_partials(&nodes, u, v))?;
                 let xs = linspace(0.0, 1.0, 41);
                 let g = ok(sp.tabulate(&xs, &xs))?;
                 ensure!(finite_grid(&g), "tabulation of a valid spline not finite");
@@ -964,24 +964,24 @@ fn hermite_cases() -> Vec<Case> {
         ),
         case("hermite::spline_uniform_zero_patches", || {
             expect_err!(
-                HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 0, 3),
+                HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 0, 3),
                 Error::ZeroPatches { .. }
             )
         }),
         risky("hermite::spline_uniform_1e6_squared_patches", || {
             expect_err!(
-                HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 1_000_000, 1_000_000),
+                HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 1_000_000, 1_000_000),
                 Error::TooLarge { .. }
             )
         }),
         risky("hermite::spline_uniform_usize_max_patches", || {
             expect_err!(
-                HermiteSpline::uniform(&Torus::default(), &Rect::unit(), usize::MAX, 1),
+                HermiteSurface::uniform(&Torus::default(), &Rect::unit(), usize::MAX, 1),
                 Error::TooLarge { .. }
             )
         }),
         case("hermite::spline_try_point_nan", || {
-            let sp = ok(HermiteSpline::uniform(
+            let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
                 &Rect::unit(),
                 2,
@@ -991,7 +991,7 @@ fn hermite_cases() -> Vec<Case> {
             expect_err!(sp.try_point(0.5, f64::INFINITY), Error::NonFinite { .. })
         }),
         case("hermite::spline_try_point_out_of_domain", || {
-            let sp = ok(HermiteSpline::uniform(
+            let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
                 &Rect::unit(),
                 2,
@@ -1002,7 +1002,7 @@ fn hermite_cases() -> Vec<Case> {
         }),
         case("hermite::spline_right_end_is_left_limit", || {
             let torus = Torus::default();
-            let sp = ok(HermiteSpline::uniform(&torus, &Rect::unit(), 2, 2))?;
+            let sp = ok(HermiteSurface::uniform(&torus, &Rect::unit(), 2, 2))?;
             let p = ok(sp.try_point(1.0, 1.0))?;
             let last = sp.patch(1, 1).eval(1.0_f64, 1.0_f64);
             ensure!(p == last, "right end {p:?} vs last patch {last:?}");
@@ -1014,7 +1014,7 @@ fn hermite_cases() -> Vec<Case> {
             Ok(())
         }),
         case("hermite::spline_tabulate_bad_samples", || {
-            let sp = ok(HermiteSpline::uniform(
+            let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
                 &Rect::unit(),
                 2,
@@ -1027,7 +1027,7 @@ fn hermite_cases() -> Vec<Case> {
             expect_err!(sp.tabulate(&[0.5], &[0.0, 2.0]), Error::OutOfDomain { value, .. } if *value == 2.0)
         }),
         risky("hermite::spline_tabulate_too_many_samples", || {
-            let sp = ok(HermiteSpline::uniform(
+            let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
                 &Rect::unit(),
                 2,
@@ -1040,7 +1040,7 @@ fn hermite_cases() -> Vec<Case> {
             "hermite::spline_torus_near_max_coordinate_evaluates_finitely",
             || {
                 let torus = ok(Torus::try_new(1.3e306, 1.3e306))?;
-                let sp = ok(HermiteSpline::uniform(&torus, &Rect::unit(), 2, 2))?;
+                let sp = ok(HermiteSurface::uniform(&torus, &Rect::unit(), 2, 2))?;
                 let xs = linspace(0.0, 1.0, 21);
                 let g = ok(sp.tabulate(&xs, &xs))?;
                 ensure!(finite_grid(&g), "tabulation not finite");
@@ -3793,7 +3793,7 @@ fn more_cases() -> Vec<Case> {
                 Error::NonFiniteSurface { .. }
             )?;
             expect_err!(
-                HermiteSpline::uniform(&ExpSurface, &rect, 2, 2),
+                HermiteSurface::uniform(&ExpSurface, &rect, 2, 2),
                 Error::NonFiniteSurface { .. } | Error::CoordinateTooLarge { .. }
             )
         }),
@@ -4119,8 +4119,8 @@ fn shorthand_cases() -> Vec<Case> {
             let nan =
                 FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s, t, s * f64::NAN));
             let u = ok(Partition::try_new(vec![0.0, 1.0]))?;
-            expect_panic("HermiteSpline::from_surface(NaN)", move || {
-                HermiteSpline::from_surface(&nan, u.clone(), u)
+            expect_panic("HermiteSurface::from_surface(NaN)", move || {
+                HermiteSurface::from_surface(&nan, u.clone(), u)
             })
         }),
     ]
@@ -4202,7 +4202,7 @@ fn sweep_cases() -> Vec<Case> {
             })
         }),
         case("hermite::sweep_non_finite_spline_parameters", || {
-            let sp = ok(HermiteSpline::uniform(
+            let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
                 &Rect::unit(),
                 2,
@@ -4473,7 +4473,7 @@ fn report_cases() -> Vec<Case> {
         }),
         case("draw::error_map_bad_samples_and_nan_surface", || {
             let f = FnSurface::new(|s, t| Vector3::new(s, t, s * t));
-            let spline = ok(HermiteSpline::uniform(&f, &Rect::unit(), 2, 2))?;
+            let spline = ok(HermiteSurface::uniform(&f, &Rect::unit(), 2, 2))?;
             expect_err!(
                 draw::error_map(&f, &spline, 1),
                 RError::Core(Error::TooFewSamples { .. })

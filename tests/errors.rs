@@ -1,7 +1,7 @@
 //! Bad input gets a typed error, never a panic: one test per case.
 
 use splinelab::{
-    de_casteljau, tabulate, uniform_spline_errors, Error, HermitePatch, HermiteSpline, Interval,
+    de_casteljau, tabulate, uniform_spline_errors, Error, HermitePatch, HermiteSurface, Interval,
     Partition, PatchEvaluation, Rect, Torus,
 };
 
@@ -80,7 +80,7 @@ fn nan_rectangle_bound() {
 
 #[test]
 fn nan_and_infinite_evaluation_parameters() {
-    let spline = HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 2, 2).expect("valid");
+    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 2, 2).expect("valid");
     assert!(matches!(
         spline.try_point(f64::NAN, 0.5),
         Err(Error::NonFinite { what: "u", .. })
@@ -97,7 +97,7 @@ fn nan_and_infinite_evaluation_parameters() {
 
 #[test]
 fn parameters_outside_the_domain() {
-    let spline = HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 2, 2).expect("valid");
+    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 2, 2).expect("valid");
     assert!(matches!(
         spline.try_point(1.0 + 1e-9, 0.5),
         Err(Error::OutOfDomain { what: "u", .. })
@@ -143,7 +143,7 @@ fn zero_patches() {
         Err(Error::ZeroPatches { .. })
     ));
     assert!(matches!(
-        HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 0, 3),
+        HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 0, 3),
         Err(Error::ZeroPatches { .. })
     ));
 }

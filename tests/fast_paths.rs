@@ -8,7 +8,7 @@
 //!   unknowns) against its defining property, `C²` continuity at every node and the end
 //!   conditions, measured from evaluations on either side of each node; `refit` against a
 //!   fresh build, bit for bit;
-//! - `HermiteSpline::tabulate_into` (rows split between two threads from 65 536 points)
+//! - `HermiteSurface::tabulate_into` (rows split between two threads from 65 536 points)
 //!   against `ParametricSurface::point`.
 //!
 //! One tolerance policy: errors relative to the data's scale, with the documented bound of
@@ -17,7 +17,7 @@
 use nalgebra::{SVector, Vector1, Vector2, Vector3};
 use proptest::prelude::*;
 use splinelab::{
-    BSplineBasis, BSplineCurve, CubicSpline, EndCondition, HermiteSpline, KnotVector, NurbsCurve,
+    BSplineBasis, BSplineCurve, CubicSpline, EndCondition, HermiteSurface, KnotVector, NurbsCurve,
     ParametricCurve, Partition, SurfaceDerivatives, Torus,
 };
 
@@ -355,7 +355,7 @@ fn cubic_spline_refit_rejects_bad_data() {
 #[test]
 fn torus_grid_tabulation_equals_pointwise() {
     let tau = std::f64::consts::TAU;
-    let spline = HermiteSpline::try_from_surface(
+    let spline = HermiteSurface::try_from_surface(
         &Torus::default(),
         Partition::uniform(0.0, tau, 16).unwrap(),
         Partition::uniform(0.0, tau, 16).unwrap(),

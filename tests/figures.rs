@@ -14,7 +14,7 @@ use splinelab::report::render3d::{Figure3d, Marker, Scene, View};
 use splinelab::report::style::FIGURE_SIZE;
 use splinelab::report::{self, Error};
 use splinelab::{
-    convergence, BSplineBasis, BSplineCurve, FnSurface, HermiteSpline, KnotVector, Partition, Rect,
+    convergence, BSplineBasis, BSplineCurve, FnSurface, HermiteSurface, KnotVector, Partition, Rect,
 };
 
 /// Minimum share of coloured pixels. Axes, grid panels, text and background are grey, black
@@ -317,7 +317,7 @@ fn a_users_surface_and_partition_are_drawn_and_studied() {
     let bump = FnSurface::new(|s, t| Vector3::new(s, t, (s * 2.0).sin() * (-t * t).exp()));
     let u = Partition::try_new(vec![0.0, 0.3, 1.0, 1.5]).expect("partition");
     let v = Partition::try_new(vec![0.0, 0.5, 1.0]).expect("partition");
-    let spline = HermiteSpline::try_from_surface(&bump, u, v).expect("spline");
+    let spline = HermiteSurface::try_from_surface(&bump, u, v).expect("spline");
     let rect = Rect::new(0.0, 1.5, 0.0, 1.0);
     let figures = [
         Plot3d::new("my surface")
@@ -471,7 +471,7 @@ fn surfaces_written_for_dual_numbers_only_are_accepted() {
     let f = FnSurface::new(saddle);
     let fig = draw::error_map(
         &f,
-        &HermiteSpline::uniform(&f, &Rect::unit(), 2, 2).expect("spline"),
+        &HermiteSurface::uniform(&f, &Rect::unit(), 2, 2).expect("spline"),
         21,
     )
     .expect("map");
@@ -484,7 +484,7 @@ fn the_notebooks_try_it_helpers_hold_their_claims() {
     let torus = splinelab::Torus::default();
     let u = Partition::try_new(vec![0.0, 0.2, 0.7, 1.0]).expect("partition");
     let v = Partition::try_new(vec![0.0, 0.4, 1.0]).expect("partition");
-    let spline = HermiteSpline::try_from_surface(&torus, u, v).expect("spline");
+    let spline = HermiteSurface::try_from_surface(&torus, u, v).expect("spline");
     let seams = report::table::seam_continuity(&spline, 11).expect("seams");
     assert_eq!(seams.df.height(), 2 + 1, "two u-seams and one v-seam");
     let col = |name: &str| -> Vec<f64> {

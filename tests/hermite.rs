@@ -8,7 +8,7 @@ use num_dual::{Dual64, DualNum, HyperDual64};
 use proptest::prelude::*;
 use splinelab::{
     bernstein_sum, de_casteljau, de_casteljau_surface, report_codice7_net, BezierPatch, ExpSurface,
-    FnSurface, Grid, HermitePatch, HermiteSpline, ParametricSurface, Partials, Partition, Rect,
+    FnSurface, Grid, HermitePatch, HermiteSurface, ParametricSurface, Partials, Partition, Rect,
     SurfaceDerivatives, Torus,
 };
 
@@ -170,7 +170,7 @@ proptest! {
 fn spline_surface_is_c1_across_seams() {
     let u = Partition::new(vec![0.0, 0.5, 0.9, 1.0]);
     let v = Partition::new(vec![0.2, 0.7, 1.3]);
-    let spline = HermiteSpline::from_surface(&Torus::default(), u.clone(), v.clone());
+    let spline = HermiteSurface::from_surface(&Torus::default(), u.clone(), v.clone());
     let du = |i: usize| u.interval(i).width();
     let dv = |j: usize| v.interval(j).width();
     for k in 0..=10 {
@@ -224,7 +224,7 @@ fn spline_global_derivatives_interpolate_the_surface_at_every_node() {
     // X_u, X_v, X_uv at the nodes equal the surface's, unscaled.
     let u = Partition::new(vec![0.3, 0.8, 1.0, 1.9]);
     let v = Partition::new(vec![-0.5, 0.1, 0.6]);
-    let spline = HermiteSpline::from_surface(&ExpSurface, u.clone(), v.clone());
+    let spline = HermiteSurface::from_surface(&ExpSurface, u.clone(), v.clone());
     for &x in u.nodes() {
         for &y in v.nodes() {
             let got = spline.partials(x, y);
@@ -248,7 +248,7 @@ fn bicubic_polynomials_are_reproduced_exactly() {
             (s - t * 2.0) * s * t,
         )
     });
-    let spline = HermiteSpline::from_surface(
+    let spline = HermiteSurface::from_surface(
         &poly,
         Partition::new(vec![-1.0, 0.2, 1.5]),
         Partition::new(vec![0.0, 0.4, 2.0]),
@@ -268,7 +268,7 @@ fn bicubic_polynomials_are_reproduced_exactly() {
 
 #[test]
 fn spline_tabulation_matches_pointwise_evaluation_including_right_ends() {
-    let spline = HermiteSpline::uniform(&Torus::default(), &Rect::new(0.0, 6.0, 0.0, 6.0), 4, 3)
+    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::new(0.0, 6.0, 0.0, 6.0), 4, 3)
         .expect("valid");
     let us = [0.0, 0.7, 1.5, 3.0, 5.99, 6.0];
     let vs = [0.0, 2.0, 4.0, 6.0];
@@ -285,4 +285,18 @@ fn spline_tabulation_matches_pointwise_evaluation_including_right_ends() {
             );
         }
     }
+}
+
+/// The old name still builds the same surface (a deprecated alias for one release).
+#[test]
+#[allow(deprecated)]
+fn the_old_name_is_the_same_type() {
+    use splinelab::{HermiteSpline, HermiteSurface, Partition, Torus};
+    let (u, v) = (
+        Partition::new(vec![0.0, 0.5, 1.0]),
+        Partition::new(vec![0.0, 1.0]),
+    );
+    let old: HermiteSpline = HermiteSpline::from_surface(&Torus::default(), u.clone(), v.clone());
+    let new: HermiteSurface = HermiteSurface::from_surface(&Torus::default(), u, v);
+    assert_eq!(old, new);
 }

@@ -86,7 +86,7 @@ use splinelab::{
     printed_setbval, report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4,
     uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
     CardinalSpline, CubicSpline, EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch,
-    HermiteSpline, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization,
+    HermiteSurface, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization,
     Partials, Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere,
     SurfaceDerivatives, Torus,
 };
@@ -1415,7 +1415,7 @@ proptest! {
         })?;
     }
 
-    /// `HermiteSpline::try_from_surface` and `HermiteSpline::uniform`: the spline reproduces
+    /// `HermiteSurface::try_from_surface` and `HermiteSurface::uniform`: the spline reproduces
     /// the surface at every node; `tabulate` = `try_point`; finite on the domain.
     #[test]
     fn hermite_spline_surface(kind in surf(), u in seq(0..=5, 1), v in seq(0..=5, 1), fu in fracs(), fv in fracs(), (ra, rb) in pair(), n in count(0..=3), m in count(0..=3)) {
@@ -1423,12 +1423,12 @@ proptest! {
             let Some(surface) = build_surface(kind)? else { return Ok(()) };
             let mut splines = Vec::new();
             if let (Ok(pu), Ok(pv)) = (Partition::try_new(u), Partition::try_new(v)) {
-                if let Ok(s) = HermiteSpline::try_from_surface(&*surface, pu, pv) {
+                if let Ok(s) = HermiteSurface::try_from_surface(&*surface, pu, pv) {
                     splines.push(s);
                 }
             }
             if let Ok(rect) = Rect::square(ra, rb) {
-                if let Ok(s) = HermiteSpline::uniform(&*surface, &rect, n, m) {
+                if let Ok(s) = HermiteSurface::uniform(&*surface, &rect, n, m) {
                     prop_assert_eq!(s.patch_counts(), (n, m));
                     splines.push(s);
                 }
@@ -1440,7 +1440,7 @@ proptest! {
         })?;
     }
 
-    /// `HermiteSpline::try_from_node_partials`: the spline reproduces the node values.
+    /// `HermiteSurface::try_from_node_partials`: the spline reproduces the node values.
     #[test]
     fn hermite_spline_nodes(u in seq(0..=4, 1), v in seq(0..=4, 1), d in values(0..=300), shape_off in prop::bool::weighted(0.1), fu in fracs(), fv in fracs()) {
         guard(|| {
@@ -1453,7 +1453,7 @@ proptest! {
                 let chunk: Vec<f64> = (0..12).map(|c| d[(k + c) % d.len()]).collect();
                 partials_from(&chunk)
             });
-            let Ok(spline) = HermiteSpline::try_from_node_partials(&nodes, pu, pv) else { return Ok(()) };
+            let Ok(spline) = HermiteSurface::try_from_node_partials(&nodes, pu, pv) else { return Ok(()) };
             prop_assert!(!shape_off, "accepted a grid of the wrong shape");
             check_spline_nodes(&spline, &fu, &fv, |i, j| nodes.get(i, j).point)?;
             Ok(())
@@ -2429,7 +2429,7 @@ proptest! {
 /// A Hermite spline reproduces `node_value(i, j)` at node `(uᵢ, vⱼ)`, is finite on its
 /// domain, and tabulates as it evaluates.
 fn check_spline_nodes(
-    spline: &HermiteSpline,
+    spline: &HermiteSurface,
     fu: &[f64],
     fv: &[f64],
     node_value: impl Fn(usize, usize) -> Vector3<f64>,

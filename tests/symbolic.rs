@@ -11,7 +11,7 @@ use splinelab::symbolic::{
     patch_formulas, surface_formulas, trace, Expr, Trace, MAX_FORMULA_DEPTH, MAX_NODES,
 };
 use splinelab::{
-    BSplineBasis, BSplineCurve, Error, HermitePatch, HermiteSpline, KnotVector, NurbsCurve,
+    BSplineBasis, BSplineCurve, Error, HermitePatch, HermiteSurface, KnotVector, NurbsCurve,
     ParametricCurve, ParametricSurface, Rect, Sphere, SurfaceDerivatives, Torus,
 };
 
@@ -609,7 +609,7 @@ fn curve_formulas_hold_on_their_piece() {
 #[test]
 fn spline_surface_formulas_name_their_patch() {
     let torus = Torus::new(2.0, 1.0);
-    let spline = HermiteSpline::uniform(&torus, &Rect::unit(), 4, 4).unwrap();
+    let spline = HermiteSurface::uniform(&torus, &Rect::unit(), 4, 4).unwrap();
     let f = surface_formulas(&spline, 0.3, 0.6).unwrap();
     assert_eq!(f.branches[..2], ["s ∈ [1/4, 1/2)", "t ∈ [1/2, 3/4)"]);
     for (s, t) in [(0.3, 0.6), (0.26, 0.74), (0.49, 0.5)] {

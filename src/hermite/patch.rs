@@ -39,7 +39,7 @@ impl HermitePatch {
         Self::try_from_matrix(c).expect("invalid Hermite matrix")
     }
 
-    /// A patch from a matrix already validated (the nets of a [`crate::HermiteSpline`]).
+    /// A patch from a matrix already validated (the nets of a [`crate::HermiteSurface`]).
     pub(crate) fn from_valid_matrix(c: Net) -> Self {
         Self { c }
     }

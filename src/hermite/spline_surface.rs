@@ -19,27 +19,32 @@ use num_dual::DualNum;
 ///
 /// # Examples
 /// ```
-/// use splinelab::{HermiteSpline, Partition, Torus};
+/// use splinelab::{HermiteSurface, Partition, Torus};
 /// let u = Partition::new(vec![0.0, 0.5, 0.9, 1.0]); // Fig 6 of the report
 /// let v = Partition::uniform(0.0, 1.0, 1).unwrap();
-/// let spline = HermiteSpline::from_surface(&Torus::default(), u, v);
+/// let spline = HermiteSurface::from_surface(&Torus::default(), u, v);
 /// assert_eq!(spline.patch_counts(), (3, 1));
 /// ```
 #[derive(Debug, Clone, PartialEq)]
-pub struct HermiteSpline {
+pub struct HermiteSurface {
     u: Partition,
     v: Partition,
     /// Row-major: patch `(i, j)` at `i * m + j`.
     nets: Vec<Net>,
 }
 
-impl HermiteSpline {
+/// The old name of [`HermiteSurface`] (a surface, where `HermiteCurve` is a curve), kept for
+/// one release.
+#[deprecated(since = "0.2.0", note = "renamed `HermiteSurface`")]
+pub type HermiteSpline = HermiteSurface;
+
+impl HermiteSurface {
     /// Interpolates `surface` on the partitions `u` (s direction) and `v` (t direction).
     /// The partials are computed once per node and shared by the patches that meet there.
     ///
     /// # Panics
     /// On a surface that is not finite at a node, or a grid too large; see
-    /// [`HermiteSpline::try_from_surface`].
+    /// [`HermiteSurface::try_from_surface`].
     pub fn from_surface<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         u: Partition,
@@ -48,7 +53,7 @@ impl HermiteSpline {
         Self::try_from_surface(surface, u, v).expect("invalid Hermite spline surface")
     }
 
-    /// [`HermiteSpline::from_surface`], checked: every node's point and partials must be
+    /// [`HermiteSurface::from_surface`], checked: every node's point and partials must be
     /// finite and every patch matrix valid, so the spline evaluates finitely on its domain.
     ///
     /// # Errors
@@ -68,12 +73,12 @@ impl HermiteSpline {
     ///
     /// # Panics
     /// If the grid is not `(n + 1) × (m + 1)` or its data are invalid; see
-    /// [`HermiteSpline::try_from_node_partials`].
+    /// [`HermiteSurface::try_from_node_partials`].
     pub fn from_node_partials(nodes: &Grid<Partials>, u: Partition, v: Partition) -> Self {
         Self::try_from_node_partials(nodes, u, v).expect("invalid node partials")
     }
 
-    /// [`HermiteSpline::from_node_partials`], checked.
+    /// [`HermiteSurface::from_node_partials`], checked.
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] unless the grid is `(n + 1) × (m + 1)`; the errors of
@@ -111,7 +116,7 @@ impl HermiteSpline {
     ///
     /// # Errors
     /// [`Error::ZeroPatches`] if `n` or `m` is 0; the errors of [`Partition::uniform`] and
-    /// [`HermiteSpline::try_from_surface`].
+    /// [`HermiteSurface::try_from_surface`].
     pub fn uniform<S: SurfaceDerivatives + Sync + ?Sized>(
         surface: &S,
         rect: &Rect,
@@ -182,7 +187,7 @@ impl HermiteSpline {
     /// computed once per grid line and the patch found once per sample.
     ///
     /// # Errors
-    /// As [`HermiteSpline::try_point`] for any sample; [`Error::TooLarge`] beyond
+    /// As [`HermiteSurface::try_point`] for any sample; [`Error::TooLarge`] beyond
     /// [`crate::error::MAX_ELEMENTS`] samples.
     pub fn tabulate(&self, u_samples: &[f64], v_samples: &[f64]) -> Result<Grid<Vector3<f64>>> {
         let mut out = Vec::new();
@@ -190,13 +195,13 @@ impl HermiteSpline {
         Ok(Grid::from_vec(u_samples.len(), v_samples.len(), out).expect("filled rows × cols"))
     }
 
-    /// As [`HermiteSpline::tabulate`], writing into `out` (resized to the grid, row-major;
+    /// As [`HermiteSurface::tabulate`], writing into `out` (resized to the grid, row-major;
     /// its former contents overwritten) so a caller that tabulates repeatedly reuses one
     /// buffer. From 65 536 points the rows are shared between two threads (the same result
     /// as on one).
     ///
     /// # Errors
-    /// As [`HermiteSpline::try_point`] for any sample.
+    /// As [`HermiteSurface::try_point`] for any sample.
     pub fn tabulate_into(
         &self,
         u_samples: &[f64],
@@ -206,7 +211,7 @@ impl HermiteSpline {
         self.tabulate_into_on(u_samples, v_samples, out, true)
     }
 
-    /// [`HermiteSpline::tabulate_into`], on one thread unless `parallel` is set (the
+    /// [`HermiteSurface::tabulate_into`], on one thread unless `parallel` is set (the
     /// benchmark's single-core figure).
     pub(crate) fn tabulate_into_on(
         &self,
@@ -247,10 +252,10 @@ fn basis_samples(
         .collect()
 }
 
-impl ParametricSurface for HermiteSpline {
+impl ParametricSurface for HermiteSurface {
     /// `X(u, v)` at global parameters. The patch is chosen by the real parts (the right end
     /// belongs to the last patch); parameters outside the domain extrapolate the nearest
-    /// end patch's polynomial — use [`HermiteSpline::try_point`] for checked evaluation.
+    /// end patch's polynomial — use [`HermiteSurface::try_point`] for checked evaluation.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D, v: D) -> Vector3<D> {
         let i = crate::symbolic::claim::piece(self.u.nodes(), &u);
         let j = crate::symbolic::claim::piece(self.v.nodes(), &v);

@@ -8,7 +8,7 @@ use crate::curve::ParametricCurve;
 use crate::domain::{linspace, Partition, Rect};
 use crate::error::Result;
 use crate::hermite::patch::HermitePatch;
-use crate::hermite::spline_surface::HermiteSpline;
+use crate::hermite::spline_surface::HermiteSurface;
 use crate::interp::angular::AngularSpline;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::nurbs::NurbsCurve;
@@ -365,7 +365,7 @@ fn torus_grid_on(k: usize, parallel: bool) -> Result<Runner> {
     let samples = linspace(0.0, TAU, k);
     let mut out = Vec::new();
     Ok(Box::new(move || {
-        let spline = HermiteSpline::try_from_surface(
+        let spline = HermiteSurface::try_from_surface(
             &Torus::default(),
             Partition::uniform(0.0, TAU, 16)?,
             Partition::uniform(0.0, TAU, 16)?,

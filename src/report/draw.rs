@@ -39,7 +39,7 @@ use crate::bspline::basis::BSplineBasis;
 use crate::curve::ParametricCurve;
 use crate::domain::{linspace, Rect};
 use crate::grid::Grid;
-use crate::hermite::spline_surface::HermiteSpline;
+use crate::hermite::spline_surface::HermiteSurface;
 use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::heatmap::{ColorScale, HeatMap};
@@ -148,7 +148,7 @@ impl Plot3d {
     /// As [`crate::HermitePatch::tabulate`].
     pub fn patches(
         mut self,
-        spline: &HermiteSpline,
+        spline: &HermiteSurface,
         samples: usize,
         alpha: f64,
         outline: bool,
@@ -172,7 +172,7 @@ impl Plot3d {
     ///
     /// # Errors
     /// As [`Plot3d::patches`].
-    pub fn spline(self, spline: &HermiteSpline) -> Result<Self> {
+    pub fn spline(self, spline: &HermiteSurface) -> Result<Self> {
         self.patches(spline, 15, 0.9, true, |i, j| {
             PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]
         })
@@ -683,10 +683,10 @@ pub fn bases(basis: &BSplineBasis, title: &str) -> Figure {
 /// decades, with the patch boundaries in white.
 ///
 /// # Errors
-/// As [`tabulate`] and [`HermiteSpline::tabulate`].
+/// As [`tabulate`] and [`HermiteSurface::tabulate`].
 pub fn error_map<S: SurfaceDerivatives + ?Sized>(
     exact: &S,
-    spline: &HermiteSpline,
+    spline: &HermiteSurface,
     samples: usize,
 ) -> Result<Figure> {
     let rect = spline.domain();

@@ -314,7 +314,7 @@ pub fn corpus() -> Result<Vec<CorpusEntry>> {
         "rational" => |s, t| Vector3::new(s / (t * t + 1.0), t / (s * s + 1.0), s * t / (s + t)),
     }
     let torus = crate::Torus::new(2.0, 1.0);
-    let spline = crate::HermiteSpline::uniform(&torus, &crate::Rect::unit(), 4, 4)?;
+    let spline = crate::HermiteSurface::uniform(&torus, &crate::Rect::unit(), 4, 4)?;
     out.push(surface_entry(
         "hermite-spline-of-torus",
         &spline,

@@ -391,7 +391,7 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
 /// [`crate::Error::TooFewSamples`] if `samples < 2`; [`Error::Table`] only if the
 /// columns came out ragged (an internal error).
 pub fn seam_continuity(
-    spline: &crate::hermite::spline_surface::HermiteSpline,
+    spline: &crate::hermite::spline_surface::HermiteSurface,
     samples: usize,
 ) -> Result<Table> {
     let local = crate::domain::Interval::try_new(0.0, 1.0)?.linspace(samples)?;

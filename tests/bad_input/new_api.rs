@@ -3651,7 +3651,7 @@ mod report {
                 drawable(plot.points(&[v3(0.0, 0.0, 0.0)], BLUE, "p").figure())
             }),
             case("plot3::patches_too_few_samples", || {
-                let s = ok(HermiteSpline::uniform(&surface(), &Rect::unit(), 2, 2))?;
+                let s = ok(HermiteSurface::uniform(&surface(), &Rect::unit(), 2, 2))?;
                 for n in [0, 1] {
                     expect_err!(
                         Plot3d::new("p").patches(&s, n, 1.0, true, |_, _| BLUE),
@@ -3661,7 +3661,7 @@ mod report {
                 draws(ok(Plot3d::new("p").spline(&s))?.figure())
             }),
             risky("plot3::patches_huge_samples", || {
-                let s = ok(HermiteSpline::uniform(&surface(), &Rect::unit(), 2, 2))?;
+                let s = ok(HermiteSurface::uniform(&surface(), &Rect::unit(), 2, 2))?;
                 for n in [usize::MAX, 1 << 40] {
                     expect_err!(
                         Plot3d::new("p").patches(&s, n, 1.0, false, |_, _| BLUE),
@@ -3939,7 +3939,7 @@ mod report {
                 Ok(())
             }),
             case("table::seam_continuity_too_few_samples", || {
-                let s = ok(HermiteSpline::uniform(&surface(), &Rect::unit(), 2, 3))?;
+                let s = ok(HermiteSurface::uniform(&surface(), &Rect::unit(), 2, 3))?;
                 for n in [0, 1] {
                     expect_err!(
                         table::seam_continuity(&s, n),
@@ -3951,7 +3951,7 @@ mod report {
                 Ok(())
             }),
             risky("table::seam_continuity_huge_samples", || {
-                let s = ok(HermiteSpline::uniform(&surface(), &Rect::unit(), 2, 2))?;
+                let s = ok(HermiteSurface::uniform(&surface(), &Rect::unit(), 2, 2))?;
                 for n in [usize::MAX, MAX_ELEMENTS + 1] {
                     expect_err!(
                         table::seam_continuity(&s, n),

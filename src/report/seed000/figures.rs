@@ -8,7 +8,7 @@ use crate::bezier::patch::BezierPatch;
 use crate::domain::{Partition, Rect};
 use crate::grid::Grid;
 use crate::hermite::patch::HermitePatch;
-use crate::hermite::spline_surface::HermiteSpline;
+use crate::hermite::spline_surface::HermiteSurface;
 use crate::report::draw::{self, Plot3d};
 use crate::report::error::Result;
 use crate::report::figure::Figure;
@@ -146,7 +146,7 @@ pub fn fig5() -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn fig6() -> Result<Figure> {
-    let spline = HermiteSpline::try_from_surface(
+    let spline = HermiteSurface::try_from_surface(
         &Torus::default(),
         Partition::try_new(vec![0.0, 0.5, 0.9, 1.0])?,
         Partition::try_new(vec![0.0, 1.0])?,
@@ -171,7 +171,7 @@ pub fn fig6() -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn fig7() -> Result<Figure> {
-    let spline = HermiteSpline::uniform(&Torus::default(), &Rect::new(0.0, TAU, 0.0, TAU), 4, 4)?;
+    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::new(0.0, TAU, 0.0, TAU), 4, 4)?;
     // (i + 2j) mod 5 differs between neighbours in u and in v, across the wrap-around too;
     // 13 samples per patch side keep the 16 patches' mesh lines apart at this size.
     Ok(
@@ -188,7 +188,7 @@ pub fn fig7() -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn fig8() -> Result<Figure> {
-    let spline = HermiteSpline::uniform(&Torus::default(), &Rect::unit(), 3, 3)?;
+    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 3, 3)?;
     // Codice 14: colors(mod(i,3)+1, :) for patch row i (1-based)
     let plot = Plot3d::new("Fig 8 — the 9 patches of n = m = 3 on [0,1]² (Codice 14)")
         .view(PATCH_VIEW)
@@ -219,6 +219,6 @@ pub fn convergence_figure() -> Result<Figure> {
 /// Never in practice.
 pub fn error_map() -> Result<Figure> {
     let torus = Torus::default();
-    let spline = HermiteSpline::uniform(&torus, &Rect::unit(), 3, 3)?;
+    let spline = HermiteSurface::uniform(&torus, &Rect::unit(), 3, 3)?;
     draw::error_map(&torus, &spline, 121)
 }
