@@ -324,27 +324,16 @@ fn lay_out<DB: DrawingBackend>(
     let view = view.drawable();
     // the finite primitives only (a NaN or infinite corner has no place in the picture)
     let scene = &scene.finite();
-    let (lo, hi) = scene.bounds();
-    let (lo, hi) = if lo.iter().chain(hi.iter()).all(|v| v.is_finite()) {
-        (lo, hi)
-    } else {
-        (Vector3::zeros(), Vector3::repeat(1.0))
-    };
-    // within SCENE_LIMIT (checked above) no extent overflows; the pad keeps a degenerate
-    // side some width relative to its coordinates
-    let size = lo.amax().max(hi.amax());
-    let pad = ((hi - lo).amax() * 0.04).max(1e-9 * size.max(1.0));
-    let (lo, hi) = (lo.add_scalar(-pad), hi.add_scalar(pad));
-    let ext = hi - lo;
+    let b = padded_box(scene);
     let mut chart = ChartBuilder::on(&area)
         .caption(title, (FONT, TITLE_SIZE))
         .margin(20)
-        .build_cartesian_3d(lo.y..hi.y, lo.z..hi.z, lo.x..hi.x)?;
+        .build_cartesian_3d(b.lo.y..b.hi.y, b.lo.z..b.hi.z, b.lo.x..b.hi.x)?;
     // axis equal: pixel extents proportional to data extents
     let (w, h) = area.dim_in_pixel();
-    let base = (w.min(h) as f64) * 0.8 / ext.amax();
+    let base = (w.min(h) as f64) * 0.8 / b.ext.amax();
     let px = |e: f64| ((e * base).round() as i32).max(1);
-    let size = (px(ext.y), px(ext.z), px(ext.x));
+    let size = (px(b.ext.y), px(b.ext.z), px(b.ext.x));
     chart.set_3d_pixel_range(size);
     chart.with_projection(|mut pb| {
         pb.yaw = view.yaw;
@@ -352,39 +341,7 @@ fn lay_out<DB: DrawingBackend>(
         pb.scale = 1.0;
         pb.into_matrix()
     });
-    // fit: project the box corners and every point once, then scale and centre
-    let (fit, centre, spare) = {
-        let coord = chart.as_coord_spec();
-        let corners = (0..8).map(|k| {
-            Vector3::new(
-                if k & 1 == 0 { lo.x } else { hi.x },
-                if k & 2 == 0 { lo.y } else { hi.y },
-                if k & 4 == 0 { lo.z } else { hi.z },
-            )
-        });
-        let points = scene
-            .quads
-            .iter()
-            .flat_map(|q| q.corners)
-            .chain(scene.segments.iter().flat_map(|s| [s.a, s.b]))
-            .chain(scene.markers.iter().map(|m| m.at))
-            .chain(corners);
-        let (mut x0, mut x1, mut y0, mut y1) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
-        for p in points {
-            let (x, y) = coord.translate(&to_plot(&p));
-            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
-        }
-        let (rx, ry) = chart.plotting_area().get_pixel_range();
-        // room for the tick labels plotters draws outside the box
-        let margin = 2 * TICK_SIZE as i32 + 16;
-        let avail_w = (rx.end - rx.start - 2 * margin).max(1) as f64;
-        let avail_h = (ry.end - ry.start - 2 * margin).max(1) as f64;
-        let fit = (avail_w / (x1 - x0).max(1) as f64).min(avail_h / (y1 - y0).max(1) as f64);
-        let screen = ((rx.start + rx.end) / 2, (ry.start + ry.end) / 2);
-        let mid = ((x0 + x1) / 2 - screen.0, (y0 + y1) / 2 - screen.1);
-        let spare = (avail_h - fit * view.scale * (y1 - y0).max(1) as f64).max(0.0);
-        (fit * view.scale, (screen, mid), spare as u32)
-    };
+    let (fit, centre, spare) = fit_to_area(&chart, scene, &b, view);
     if !draw {
         return Ok(spare);
     }
@@ -400,6 +357,114 @@ fn lay_out<DB: DrawingBackend>(
         pb.set_pivot((size.0 / 2, size.1 / 2, size.2 / 2), after);
         pb.into_matrix()
     });
+    draw_axes(&mut chart, &b)?;
+    draw_faces(&mut chart, scene)?;
+    draw_segments(&mut chart, &area, scene)?;
+    chart.draw_series(
+        scene
+            .markers
+            .iter()
+            .map(|m| Circle::new(to_plot(&m.at), m.radius.min(MAX_MARK), m.color.filled())),
+    )?;
+    draw_legend(&area, &scene.legend)?;
+    if let (Some(bar), Some((z0, z1))) = (bar, scene.height_bar) {
+        let range = axis_range(z0, z1.max(z0), 0.0).unwrap_or((0.0, 1.0));
+        draw_color_bar(&bar, "height z", range, ColorScale::Linear)?;
+    }
+    Ok(spare)
+}
+
+/// The 3-D chart of a scene: plotters' axes are (our y, our z, our x).
+type Chart3d<'a, DB> = ChartContext<
+    'a,
+    DB,
+    plotters::coord::cartesian::Cartesian3d<
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+    >,
+>;
+
+/// The scene's bounding box, padded so that a degenerate side keeps some width.
+struct PaddedBox {
+    lo: Vector3<f64>,
+    hi: Vector3<f64>,
+    ext: Vector3<f64>,
+    pad: f64,
+}
+
+/// The box of the scene's finite primitives (the unit cube if there are none), padded by 4 %
+/// of its largest side.
+fn padded_box(scene: &Scene) -> PaddedBox {
+    let (lo, hi) = scene.bounds();
+    let (lo, hi) = if lo.iter().chain(hi.iter()).all(|v| v.is_finite()) {
+        (lo, hi)
+    } else {
+        (Vector3::zeros(), Vector3::repeat(1.0))
+    };
+    // within SCENE_LIMIT (checked above) no extent overflows; the pad keeps a degenerate
+    // side some width relative to its coordinates
+    let size = lo.amax().max(hi.amax());
+    let pad = ((hi - lo).amax() * 0.04).max(1e-9 * size.max(1.0));
+    let (lo, hi) = (lo.add_scalar(-pad), hi.add_scalar(pad));
+    PaddedBox {
+        lo,
+        hi,
+        ext: hi - lo,
+        pad,
+    }
+}
+
+/// The scale that fits the projected box and every point into the plotting area (room left
+/// for the tick labels), the screen centre and the picture's centre offset, and the rows to
+/// spare below it: the box corners and every point projected once.
+#[allow(clippy::type_complexity)]
+fn fit_to_area<DB: DrawingBackend>(
+    chart: &Chart3d<'_, DB>,
+    scene: &Scene,
+    b: &PaddedBox,
+    view: View,
+) -> (f64, ((i32, i32), (i32, i32)), u32) {
+    let (lo, hi) = (b.lo, b.hi);
+    let coord = chart.as_coord_spec();
+    let corners = (0..8).map(|k| {
+        Vector3::new(
+            if k & 1 == 0 { lo.x } else { hi.x },
+            if k & 2 == 0 { lo.y } else { hi.y },
+            if k & 4 == 0 { lo.z } else { hi.z },
+        )
+    });
+    let points = scene
+        .quads
+        .iter()
+        .flat_map(|q| q.corners)
+        .chain(scene.segments.iter().flat_map(|s| [s.a, s.b]))
+        .chain(scene.markers.iter().map(|m| m.at))
+        .chain(corners);
+    let (mut x0, mut x1, mut y0, mut y1) = (i32::MAX, i32::MIN, i32::MAX, i32::MIN);
+    for p in points {
+        let (x, y) = coord.translate(&to_plot(&p));
+        (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+    }
+    let (rx, ry) = chart.plotting_area().get_pixel_range();
+    // room for the tick labels plotters draws outside the box
+    let margin = 2 * TICK_SIZE as i32 + 16;
+    let avail_w = (rx.end - rx.start - 2 * margin).max(1) as f64;
+    let avail_h = (ry.end - ry.start - 2 * margin).max(1) as f64;
+    let fit = (avail_w / (x1 - x0).max(1) as f64).min(avail_h / (y1 - y0).max(1) as f64);
+    let screen = ((rx.start + rx.end) / 2, (ry.start + ry.end) / 2);
+    let mid = ((x0 + x1) / 2 - screen.0, (y0 + y1) / 2 - screen.1);
+    let spare = (avail_h - fit * view.scale * (y1 - y0).max(1) as f64).max(0.0);
+    (fit * view.scale, (screen, mid), spare as u32)
+}
+
+/// The box's light grid and ticks, and the axis names beside the middle of the edges plotters
+/// labels for these views (yaw in (0, π/2)): its X axis (our y) along the front edge, its Z
+/// axis (our x) along the right edge, its Y axis (our z) at the back-left corner.
+fn draw_axes<DB: DrawingBackend>(
+    chart: &mut Chart3d<'_, DB>,
+    b: &PaddedBox,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     chart
         .configure_axes()
         .light_grid_style(BLACK.mix(0.08))
@@ -412,25 +477,29 @@ fn lay_out<DB: DrawingBackend>(
         .y_formatter(&|v| format!("{v:.1}"))
         .z_formatter(&|v| format!("{v:.1}"))
         .draw()?;
-
-    // Axis names beside the middle of the edges plotters labels for these views (yaw in
-    // (0, π/2)): its X axis (our y) along the front edge, its Z axis (our x) along the right
-    // edge, its Y axis (our z) at the back-left corner. Positions in plotters' coordinates.
+    // positions in plotters' coordinates
     let label = (FONT, LABEL_SIZE + 4).into_font().color(&BLACK);
+    let (lo, hi) = (b.lo, b.hi);
     let mid = (lo + hi) / 2.0;
-    let off = ext.amax() * 0.16;
+    let off = b.ext.amax() * 0.16;
     let names = [
         ("y", (mid.y, lo.z, hi.x + off)),
         ("x", (hi.y + off, lo.z, mid.x)),
-        ("z", (lo.y, hi.z + pad, lo.x)),
+        ("z", (lo.y, hi.z + b.pad, lo.x)),
     ];
     chart.draw_series(
         names
             .iter()
             .map(|(n, p)| Text::new(n.to_string(), *p, label.clone())),
     )?;
+    Ok(())
+}
 
-    // faces back to front
+/// The faces, back to front (plotters has no depth buffer), shaded, with mesh lines if asked.
+fn draw_faces<DB: DrawingBackend>(
+    chart: &mut Chart3d<'_, DB>,
+    scene: &Scene,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let coord = chart.as_coord_spec().clone();
     let depth = |q: &Quad| {
         let c = (q.corners[0] + q.corners[1] + q.corners[2] + q.corners[3]) / 4.0;
@@ -452,6 +521,16 @@ fn lay_out<DB: DrawingBackend>(
             chart.draw_series(std::iter::once(PathElement::new(ring, edge)))?;
         }
     }
+    Ok(())
+}
+
+/// The segments, each with its arrowhead (drawn in screen space on `area`) if it has one.
+fn draw_segments<DB: DrawingBackend>(
+    chart: &mut Chart3d<'_, DB>,
+    area: &DrawingArea<DB, Shift>,
+    scene: &Scene,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let coord = chart.as_coord_spec().clone();
     let (bx, by) = area.get_base_pixel();
     for s in &scene.segments {
         let width = s.width.min(MAX_MARK);
@@ -470,18 +549,7 @@ fn lay_out<DB: DrawingBackend>(
             }
         }
     }
-    chart.draw_series(
-        scene
-            .markers
-            .iter()
-            .map(|m| Circle::new(to_plot(&m.at), m.radius.min(MAX_MARK), m.color.filled())),
-    )?;
-    draw_legend(&area, &scene.legend)?;
-    if let (Some(bar), Some((z0, z1))) = (bar, scene.height_bar) {
-        let range = axis_range(z0, z1.max(z0), 0.0).unwrap_or((0.0, 1.0));
-        draw_color_bar(&bar, "height z", range, ColorScale::Linear)?;
-    }
-    Ok(spare)
+    Ok(())
 }
 
 /// The triangle of an arrowhead of length `len` pixels at `b`, pointing from `a` to `b`;
