@@ -289,6 +289,7 @@ fn frames_go_to_polars_and_back() {
         PlColumn::new("a".into(), vec![1i32, -2]),
         PlColumn::new("b".into(), vec![1u32, 2]),
         PlColumn::new("c".into(), vec![0.5f32, 1.5]),
+        PlColumn::new("d".into(), vec![None::<f64>, None]),
     ])
     .expect("df");
     let f = Frame::try_from(&narrow).expect("frame");
@@ -304,4 +305,6 @@ fn frames_go_to_polars_and_back() {
         f.column("c").expect("c").f64(),
         Some(&[Some(0.5), Some(1.5)][..])
     );
+    // an all-null column keeps its type's kind
+    assert_eq!(f.column("d").expect("d").f64(), Some(&[None, None][..]));
 }

@@ -276,8 +276,8 @@ impl fmt::Display for Cell<'_> {
 
 #[cfg(feature = "polars")]
 mod polars_conversions {
-    use super::{Cell, Column, Frame, Values};
-    use polars::prelude::{AnyValue, Column as PlColumn, DataFrame, PolarsError};
+    use super::{Column, Frame, Values};
+    use polars::prelude::{AnyValue, Column as PlColumn, DataFrame, DataType, PolarsError};
 
     impl Frame {
         /// The frame as a polars `DataFrame` (feature `polars`): floats as `Float64`,
@@ -310,74 +310,49 @@ mod polars_conversions {
         type Error = PolarsError;
 
         /// Any DataFrame as a frame: float, integer, boolean and string columns keep their
-        /// kind; a column of another type (dates, lists…) becomes text as polars prints it.
+        /// kind (from the column's type, so an all-null column keeps it too); a column of
+        /// another type (dates, lists…) becomes text as polars prints it.
         fn try_from(df: &DataFrame) -> Result<Self, PolarsError> {
             let columns = df
                 .columns()
                 .iter()
                 .map(|c| {
                     let cells = (0..df.height())
-                        .map(|i| c.get(i).map(|v| v.into_static()))
+                        .map(|i| c.get(i))
                         .collect::<Result<Vec<_>, _>>()?;
-                    Ok(Column::new(c.name().to_string(), values_of(&cells)))
+                    Ok(Column::new(
+                        c.name().to_string(),
+                        values_of(c.dtype(), &cells),
+                    ))
                 })
                 .collect::<Result<Vec<_>, PolarsError>>()?;
             Ok(Frame { columns })
         }
     }
 
-    /// The cells of one polars column as one kind of [`Values`].
-    fn values_of(cells: &[AnyValue<'static>]) -> Values {
-        let kind = cells.iter().find(|v| !v.is_null());
-        let cell = |v: &AnyValue| -> Cell<'static> {
-            match v {
-                AnyValue::Float64(x) => Cell::Float(*x),
-                AnyValue::Float32(x) => Cell::Float(f64::from(*x)),
-                AnyValue::Int8(_)
-                | AnyValue::Int16(_)
-                | AnyValue::Int32(_)
-                | AnyValue::Int64(_) => v.extract::<i64>().map_or(Cell::Null, Cell::Int),
-                AnyValue::UInt8(_)
-                | AnyValue::UInt16(_)
-                | AnyValue::UInt32(_)
-                | AnyValue::UInt64(_) => v.extract::<u64>().map_or(Cell::Null, Cell::UInt),
-                AnyValue::Boolean(b) => Cell::Bool(*b),
-                _ => Cell::Null,
-            }
-        };
-        // one kind's values: the cells of that kind, `None` for a null (or a stray kind)
-        fn pick<T>(cells: &[Cell], get: fn(Cell) -> Option<T>) -> Vec<Option<T>> {
-            cells.iter().map(|c| get(*c)).collect()
+    /// The cells of one polars column of type `dtype` as the [`Values`] of that kind.
+    fn values_of(dtype: &DataType, cells: &[AnyValue]) -> Values {
+        fn pick<T>(cells: &[AnyValue], get: impl Fn(&AnyValue) -> Option<T>) -> Vec<Option<T>> {
+            cells.iter().map(get).collect()
         }
-        let numbers: Vec<Cell> = cells.iter().map(cell).collect();
-        match kind.map(&cell) {
-            Some(Cell::Float(_)) => Values::Float(pick(&numbers, |c| match c {
-                Cell::Float(x) => Some(x),
+        if dtype.is_float() {
+            Values::Float(pick(cells, |v| v.extract::<f64>()))
+        } else if dtype.is_signed_integer() {
+            Values::Int(pick(cells, |v| v.extract::<i64>()))
+        } else if dtype.is_unsigned_integer() {
+            Values::UInt(pick(cells, |v| v.extract::<u64>()))
+        } else if dtype.is_bool() {
+            Values::Bool(pick(cells, |v| match v {
+                AnyValue::Boolean(b) => Some(*b),
                 _ => None,
-            })),
-            Some(Cell::Int(_)) => Values::Int(pick(&numbers, |c| match c {
-                Cell::Int(x) => Some(x),
-                _ => None,
-            })),
-            Some(Cell::UInt(_)) => Values::UInt(pick(&numbers, |c| match c {
-                Cell::UInt(x) => Some(x),
-                _ => None,
-            })),
-            Some(Cell::Bool(_)) => Values::Bool(pick(&numbers, |c| match c {
-                Cell::Bool(x) => Some(x),
-                _ => None,
-            })),
-            _ => Values::Text(
-                cells
-                    .iter()
-                    .map(|v| match v {
-                        AnyValue::Null => None,
-                        AnyValue::String(s) => Some(s.to_string()),
-                        AnyValue::StringOwned(s) => Some(s.to_string()),
-                        other => Some(other.to_string()),
-                    })
-                    .collect(),
-            ),
+            }))
+        } else {
+            Values::Text(pick(cells, |v| match v {
+                AnyValue::Null => None,
+                AnyValue::String(s) => Some(s.to_string()),
+                AnyValue::StringOwned(s) => Some(s.to_string()),
+                other => Some(other.to_string()),
+            }))
         }
     }
 }

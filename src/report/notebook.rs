@@ -37,11 +37,8 @@ impl std::fmt::Display for Html {
     }
 }
 
-pub(crate) fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
+/// Text for HTML: `&`, `<`, `>` escaped (the formula layer's function).
+pub(crate) use crate::symbolic::escape;
 
 /// A number for reading: 6 significant digits, `0` for exact zero.
 fn num(x: f64) -> String {

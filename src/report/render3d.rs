@@ -341,11 +341,15 @@ fn lay_out<DB: DrawingBackend>(
         pb.scale = 1.0;
         pb.into_matrix()
     });
-    let (fit, centre, spare) = fit_to_area(&chart, scene, &b, view);
+    let Fit {
+        scale: fit,
+        screen: (sx, sy),
+        offset: (mx, my),
+        spare,
+    } = fit_to_area(&chart, scene, &b, view);
     if !draw {
         return Ok(spare);
     }
-    let ((sx, sy), (mx, my)) = centre;
     chart.with_projection(|mut pb| {
         pb.yaw = view.yaw;
         pb.pitch = view.pitch;
@@ -418,13 +422,12 @@ fn padded_box(scene: &Scene) -> PaddedBox {
 /// The scale that fits the projected box and every point into the plotting area (room left
 /// for the tick labels), the screen centre and the picture's centre offset, and the rows to
 /// spare below it: the box corners and every point projected once.
-#[allow(clippy::type_complexity)]
 fn fit_to_area<DB: DrawingBackend>(
     chart: &Chart3d<'_, DB>,
     scene: &Scene,
     b: &PaddedBox,
     view: View,
-) -> (f64, ((i32, i32), (i32, i32)), u32) {
+) -> Fit {
     let (lo, hi) = (b.lo, b.hi);
     let coord = chart.as_coord_spec();
     let corners = (0..8).map(|k| {
@@ -455,7 +458,24 @@ fn fit_to_area<DB: DrawingBackend>(
     let screen = ((rx.start + rx.end) / 2, (ry.start + ry.end) / 2);
     let mid = ((x0 + x1) / 2 - screen.0, (y0 + y1) / 2 - screen.1);
     let spare = (avail_h - fit * view.scale * (y1 - y0).max(1) as f64).max(0.0);
-    (fit * view.scale, (screen, mid), spare as u32)
+    Fit {
+        scale: fit * view.scale,
+        screen,
+        offset: mid,
+        spare: spare as u32,
+    }
+}
+
+/// How the projected scene sits in the plotting area ([`fit_to_area`]).
+struct Fit {
+    /// The projection's scale.
+    scale: f64,
+    /// The plotting area's centre, in pixels.
+    screen: (i32, i32),
+    /// The unscaled picture's centre relative to `screen`.
+    offset: (i32, i32),
+    /// Rows to spare below the picture.
+    spare: u32,
 }
 
 /// The box's light grid and ticks, and the axis names beside the middle of the edges plotters

@@ -12,6 +12,7 @@
 use crate::report::error::{io_err, Result};
 use crate::report::files::write_atomic;
 use crate::report::notebook::escape;
+use crate::report::table::html_rows;
 use crate::report::{outputs, Output};
 use std::fmt::Write as _;
 use std::fs;
@@ -48,20 +49,15 @@ fn csv_records(text: &str) -> Vec<Vec<String>> {
     records
 }
 
-/// A CSV as an HTML table, its first record the header.
+/// A CSV as an HTML table ([`crate::report::table::html_rows`]), its first record the header.
 fn csv_table(text: &str) -> String {
-    let records = csv_records(text);
-    let mut html = String::from("<table>");
-    for (k, record) in records.iter().enumerate() {
-        let cell = if k == 0 { "th" } else { "td" };
-        html.push_str("<tr>");
-        for field in record {
-            let _ = write!(html, "<{cell}>{}</{cell}>", escape(field));
-        }
-        html.push_str("</tr>");
-    }
-    html.push_str("</table>");
-    html
+    let mut records = csv_records(text);
+    let header = if records.is_empty() {
+        Vec::new()
+    } else {
+        records.remove(0)
+    };
+    html_rows(&header, &records)
 }
 
 /// Copies `from` to `to` (atomically, as every output is written) if `from` exists; whether

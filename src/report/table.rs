@@ -8,6 +8,7 @@ use crate::metrics::CoordErrors;
 use crate::report::error::{io_err, Error, Result};
 use crate::report::files::write_atomic;
 pub use crate::report::frame::{Cell, Column, Frame, FrameError, Values};
+use crate::report::notebook::escape;
 use crate::study::{ConvergenceOrders, ConvergenceRow};
 use crate::surface::{partials_on_grid, SurfaceDerivatives};
 use nalgebra::Vector3;
@@ -80,11 +81,11 @@ impl Table {
     /// # Errors
     /// None today (see [`display_rows`]).
     pub fn to_html(&self) -> Result<String> {
-        let mut html = format!("<h4>{}</h4>\n", escape_html(&self.title));
+        let mut html = format!("<h4>{}</h4>\n", escape(&self.title));
         html.push_str(&html_table(&self.df)?);
         html.push_str("\n<ul>\n");
         for note in &self.notes {
-            let _ = writeln!(html, "<li>{}</li>", escape_html(note));
+            let _ = writeln!(html, "<li>{}</li>", escape(note));
         }
         html.push_str("</ul>");
         Ok(html)
@@ -180,32 +181,32 @@ pub fn markdown(df: &Frame) -> Result<String> {
     Ok(md)
 }
 
-fn escape_html(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
-
 /// Any frame as an HTML `<table>` with every row and column.
 ///
 /// # Errors
 /// None today (see [`display_rows`]).
 pub fn html_table(df: &Frame) -> Result<String> {
     let (names, rows) = display_rows(df)?;
+    Ok(html_rows(&names, &rows))
+}
+
+/// An HTML `<table>` of a header row and body rows of display strings (escaped here), for
+/// frames ([`html_table`]) and for tables read back from their CSV (the site).
+pub(crate) fn html_rows(names: &[String], rows: &[Vec<String>]) -> String {
     let mut html = String::from("<table>\n<thead><tr>");
-    for n in &names {
-        let _ = write!(html, "<th>{}</th>", escape_html(n));
+    for n in names {
+        let _ = write!(html, "<th>{}</th>", escape(n));
     }
     html.push_str("</tr></thead>\n<tbody>\n");
     for row in rows {
         html.push_str("<tr>");
         for c in row {
-            let _ = write!(html, "<td>{}</td>", escape_html(&c));
+            let _ = write!(html, "<td>{}</td>", escape(c));
         }
         html.push_str("</tr>\n");
     }
     html.push_str("</tbody>\n</table>");
-    Ok(html)
+    html
 }
 
 /// Any frame as CSV (RFC 4180): a header row, then one row per record; floats in the

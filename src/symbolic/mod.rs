@@ -105,6 +105,9 @@
 mod canon;
 pub(crate) mod claim;
 mod display;
+// HTML/MathML escaping, also the report layer's (one function for both)
+#[cfg(feature = "report")]
+pub(crate) use display::escape;
 mod expr;
 mod formulas;
 mod ops;
