@@ -90,7 +90,7 @@ fn error_notes() -> Vec<String> {
 /// T3: seed 000 §3, a single patch of the torus on `[0, 1]²` and `[0, 0.5]²`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn t3() -> Result<Table> {
     let id = "t3-error";
     Ok(Table {
@@ -104,7 +104,7 @@ pub fn t3() -> Result<Table> {
 /// T6: seed 000 §6, `n × m` patches of the torus on `[0, 1]²`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn t6() -> Result<Table> {
     let id = "t6-spline-error";
     Ok(Table {
@@ -131,7 +131,7 @@ fn max_deviation(h: &HermitePatch, b: &BezierPatch) -> Result<f64> {
 /// net of Codice 7 as printed.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn equivalence() -> Result<Table> {
     let id = "t4-equivalence";
     let torus = Torus::default();
@@ -194,7 +194,7 @@ pub fn torus_convergence() -> Result<Vec<crate::study::ConvergenceRow>> {
 /// `n = 1, 2, 4, …, 64`, with observed orders between rows (expected: 4).
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn convergence_table() -> Result<Table> {
     let rows = torus_convergence()?;
     Ok(table::convergence(
@@ -215,7 +215,7 @@ pub fn convergence_table() -> Result<Table> {
 /// `X_t = (−r sin t cos s, −r sin t sin s, r cos t)`, `X_st = (r sin t sin s, −r sin t cos s, 0)`.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn torus_partials() -> Result<Table> {
     use crate::surface::SurfaceDerivatives;
     let id = "torus-partials";

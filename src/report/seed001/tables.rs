@@ -19,7 +19,7 @@ use nalgebra::{Vector1, Vector2};
 /// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn knot_vectors() -> Result<Table> {
     let id = "knot-vectors";
     let extended = KnotVector::extended_partition(
@@ -114,7 +114,7 @@ pub fn knot_vectors() -> Result<Table> {
 /// evaluator.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn partition_of_unity() -> Result<Table> {
     let id = "partition-of-unity";
     let basis = BSplineBasis::try_new(
@@ -163,7 +163,7 @@ pub const CIRCLE_SAMPLES: usize = 10_001;
 /// unit weights (a B-spline, not a circle).
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn nurbs_circle() -> Result<Table> {
     let id = "nurbs-circle";
     let center = Vector2::new(0.5, -0.25);
@@ -232,7 +232,7 @@ pub fn nurbs_circle() -> Result<Table> {
 /// nodes, and what the Vandermonde route loses.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn runge_errors() -> Result<Table> {
     let id = "runge-errors";
     let rows = data::runge_rows()?;
@@ -294,7 +294,7 @@ pub fn runge_errors() -> Result<Table> {
 /// and the agreement of the tridiagonal route with the B-spline collocation route.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn cubic_spline_ends() -> Result<Table> {
     let id = "cubic-spline-ends";
     let (x, y) = data::spline_ends_data();

@@ -18,7 +18,7 @@ use nalgebra::Vector2;
 /// vs Bernstein sum.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn de_casteljau_table() -> Result<Table> {
     let id = "de-casteljau";
     let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
@@ -56,7 +56,7 @@ pub fn de_casteljau_table() -> Result<Table> {
 /// from its intent.
 ///
 /// # Errors
-/// Only on an internal polars failure ([`crate::report::Error::Table`]).
+/// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn seed003_checks() -> Result<Table> {
     let id = "seed003-checks";
     let grid = linspace(0.0, 1.0, 101);

@@ -51,7 +51,7 @@ fn pct(e: f64, size: f64) -> f64 {
 /// Table I regenerated: one row per shape × method (module docs).
 ///
 /// # Errors
-/// As [`study`]; an internal polars failure ([`crate::report::Error::Table`]).
+/// As [`study`]; a ragged frame (an internal error) ([`crate::report::Error::Table`]).
 pub fn table() -> Result<Table> {
     table_of(study()?)
 }
@@ -62,7 +62,7 @@ pub fn table() -> Result<Table> {
 /// [`conclusions_of`].
 ///
 /// # Errors
-/// An internal polars failure ([`crate::report::Error::Table`]).
+/// a ragged frame (an internal error) ([`crate::report::Error::Table`]).
 pub fn table_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i";
     let (mut column, mut shape, mut method) = (vec![], vec![], vec![]);
@@ -224,7 +224,7 @@ fn short_label(method: &Method) -> String {
 /// other method ([`cross_methods`]).
 ///
 /// # Errors
-/// As [`study`] and [`cross_methods`]; an internal polars failure.
+/// As [`study`] and [`cross_methods`]; a ragged frame (an internal error).
 pub fn cross() -> Result<Table> {
     cross_of(study()?)
 }
@@ -232,7 +232,7 @@ pub fn cross() -> Result<Table> {
 /// [`cross`] of a study a caller holds (see [`table_of`]).
 ///
 /// # Errors
-/// As [`cross_methods`]; an internal polars failure.
+/// As [`cross_methods`]; a ragged frame (an internal error).
 pub fn cross_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i-cross";
     let rows = cross_methods(cells)?;
@@ -393,7 +393,7 @@ static FEWEST: OnceLock<Vec<(Job, ContourStudy)>> = OnceLock::new();
 /// of its size ([`fewest_for_contours`]), beside the paper's counts.
 ///
 /// # Errors
-/// The errors of the letters' fonts and of the searches; an internal polars failure.
+/// The errors of the letters' fonts and of the searches; a ragged frame (an internal error).
 pub fn letters_and_coast() -> Result<Table> {
     letters_and_coast_of(fewest_study()?)
 }
@@ -401,7 +401,7 @@ pub fn letters_and_coast() -> Result<Table> {
 /// [`letters_and_coast`] of searches a caller holds ([`contour_searches`]; see [`table_of`]).
 ///
 /// # Errors
-/// The errors of the decimated coast's measure; an internal polars failure.
+/// The errors of the decimated coast's measure; a ragged frame (an internal error).
 pub fn letters_and_coast_of(rows: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-fewest";
     let coast = data::coastline();
@@ -521,8 +521,8 @@ fn judged(hits: usize, of: usize, supported: f64, contradicted: f64) -> &'static
 /// coastline.
 ///
 /// # Errors
-/// As [`study`], [`cross_methods`], [`fewest_study`] and [`comparison::pieces_changed`]; an
-/// internal polars failure.
+/// As [`study`], [`cross_methods`], [`fewest_study`] and [`comparison::pieces_changed`]; a ragged
+/// frame (an internal error).
 pub fn conclusions() -> Result<Table> {
     conclusions_of(study()?, fewest_study()?)
 }
@@ -530,7 +530,7 @@ pub fn conclusions() -> Result<Table> {
 /// [`conclusions`] of studies a caller holds (see [`table_of`]).
 ///
 /// # Errors
-/// As [`cross_methods`] and [`comparison::pieces_changed`]; an internal polars failure.
+/// As [`cross_methods`] and [`comparison::pieces_changed`]; a ragged frame (an internal error).
 pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-conclusions";
     let cross = cross_methods(cells)?;
