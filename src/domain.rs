@@ -281,7 +281,7 @@ impl Span {
 impl std::fmt::Display for Span {
     /// `[1/4, 1/2)`, `[3/4, 1]` (ends printed as [`crate::symbolic::number`]).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        use crate::symbolic::number;
+        use crate::printed::number;
         let close = if self.closed { ']' } else { ')' };
         write!(f, "[{}, {}{close}", number(self.lo), number(self.hi))
     }

@@ -50,6 +50,7 @@ pub use num_dual;
 
 pub mod bezier;
 pub mod blending;
+mod branch;
 pub mod bspline;
 pub mod comparison;
 pub mod curve;
@@ -66,6 +67,7 @@ pub mod metrics;
 pub mod nurbs;
 mod parallel;
 pub mod prelude;
+mod printed;
 #[cfg(feature = "report")]
 pub mod report;
 pub mod seeds;

@@ -219,7 +219,7 @@ impl ParametricCurve<2> for Shape {
                 for k in 0..4 {
                     nodes[k + 1] = nodes[k] + sides[k];
                 }
-                let k = crate::symbolic::claim::piece(&nodes, &t);
+                let k = crate::branch::piece(&nodes, &t);
                 let start = nodes[k];
                 let (a, b) = (corners[k], corners[(k + 1) % 4]);
                 let s = (t - start) / sides[k];

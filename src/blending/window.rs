@@ -89,7 +89,7 @@ impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
     /// `u = s − k`; `s = segments` is the end of the last segment), for any number type.
     /// Outside the range the end segments are extrapolated.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D) -> SVector<D, N> {
-        let k = crate::symbolic::claim::unit_piece(self.segments, &s);
+        let k = crate::branch::unit_piece(self.segments, &s);
         let u = s - k as f64;
         match self.blending {
             Blending::UniformBSpline => self.window(k, u),
@@ -108,7 +108,7 @@ impl<const N: usize> ParametricCurve<N> for WindowCurve<N> {
 
     /// `[k, k + 1)`, segment `k = ⌊s⌋`.
     fn span_at(&self, s: f64) -> Option<crate::domain::Span> {
-        Some(crate::symbolic::claim::unit_span(s, self.segments))
+        Some(crate::branch::unit_span(s, self.segments))
     }
 }
 

@@ -211,8 +211,8 @@ impl BSplineBasis {
 
     /// The values on which span `span`, picked for the value `x`, holds: its interval, the
     /// end spans extended beyond the domain where `x` lies beyond it (they extrapolate).
-    fn span_condition(&self, span: usize, x: f64) -> crate::symbolic::Condition {
-        crate::symbolic::claim::beyond(self.span_interval(span), x, self.domain())
+    fn span_condition(&self, span: usize, x: f64) -> crate::branch::Condition {
+        crate::branch::beyond(self.span_interval(span), x, self.domain())
     }
 
     /// The knot span `[t_ℓ, t_ℓ₊₁)` of `t` ([`BSplineBasis::find_span`]: the right end of the
@@ -425,16 +425,16 @@ impl BSplineBasis {
         // the same polynomial. Numbers expand at t itself (the most accurate value there);
         // a traced formula at the span's start t_ℓ, so its coefficients are the exact Taylor
         // coefficients there and the piece reads in u = t − t_ℓ without cancellation
-        let t0 = if crate::symbolic::tracing() {
+        let t0 = if crate::branch::traced() {
             k[span]
         } else {
-            crate::symbolic::claim::read_quietly(&t)
+            crate::branch::read_quietly(&t)
         };
         // the Taylor expansion stops at NDERIV: exact for dual numbers of plain numbers,
         // whose part beyond the real one is nilpotent. Under a symbolic trace the real part
         // itself is a formula in t, so the span polynomial is expanded to its full degree p
         // (exact for any t: the formula holds on the whole span, not only at t₀)
-        let order = if crate::symbolic::tracing() {
+        let order = if crate::branch::traced() {
             p
         } else {
             p.min(D::NDERIV)
@@ -462,7 +462,7 @@ impl BSplineBasis {
     /// The span holding `t` and the non-zero basis functions there (see
     /// [`BSplineBasis::nonzero_into`]).
     pub fn nonzero<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> (usize, Vec<D>) {
-        let span = crate::symbolic::claim::choose(&t, |x| {
+        let span = crate::branch::choose(&t, |x| {
             let span = self.find_span(x);
             (span, self.span_condition(span, x))
         });
@@ -564,8 +564,7 @@ impl BSplineBasis {
         let b = self.domain().1;
         let end_span = self.find_span(b);
         // the level-0 functions are picked by the knot span of t: the formula holds there
-        let x =
-            crate::symbolic::claim::choose(&t, |x| (x, self.span_condition(self.find_span(x), x)));
+        let x = crate::branch::choose(&t, |x| (x, self.span_condition(self.find_span(x), x)));
         // level 0: N_{i+j,0}, j = 0 … q. At the right end b exactly, the last non-empty span
         // is closed on the right and no other N_{·,0} is 1 (for a clamped end the half-open
         // rule would give all zeros; where b is repeated, an empty span).

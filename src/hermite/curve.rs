@@ -96,7 +96,7 @@ impl<const N: usize> ParametricCurve<N> for HermiteCurve<N> {
     /// `C(u)` by the Hermite form of the interval holding `u` (the right end belongs to the
     /// last interval; outside, the end cubics extrapolate).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> SVector<D, N> {
-        let k = crate::symbolic::claim::piece(&self.knots, &u);
+        let k = crate::branch::piece(&self.knots, &u);
         let h = self.knots[k + 1] - self.knots[k];
         let t = (u - self.knots[k]) / h;
         let [h0, h1, h2, h3] = hermite_basis(t);

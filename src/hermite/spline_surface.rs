@@ -257,8 +257,8 @@ impl ParametricSurface for HermiteSurface {
     /// belongs to the last patch); parameters outside the domain extrapolate the nearest
     /// end patch's polynomial — use [`HermiteSurface::try_point`] for checked evaluation.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D, v: D) -> Vector3<D> {
-        let i = crate::symbolic::claim::piece(self.u.nodes(), &u);
-        let j = crate::symbolic::claim::piece(self.v.nodes(), &v);
+        let i = crate::branch::piece(self.u.nodes(), &u);
+        let j = crate::branch::piece(self.v.nodes(), &v);
         let (iu, iv) = (self.u.interval(i), self.v.interval(j));
         let s = (u - iu.start()) / iu.width();
         let t = (v - iv.start()) / iv.width();

@@ -641,12 +641,12 @@ impl AngularSpline {
     }
 
     fn eval_in<D: DualNum<Primitive = f64> + Copy>(&self, j: usize, s: D) -> Vector2<D> {
-        use crate::symbolic::claim::Condition;
+        use crate::branch::Condition;
         // the arcs of piece j: breaks[k] = j and the next one or two
         let k = self.breaks.partition_point(|&b| b < j as f64);
         if self.kinds[j] == PieceKind::Inflection {
             // the two arcs of an inflection piece: s ∈ [0, ½) and [½, 1]
-            let first = crate::symbolic::claim::choose(&s, |x| {
+            let first = crate::branch::choose(&s, |x| {
                 if x < 0.5 {
                     (true, Condition::below(0.5, false))
                 } else {
@@ -792,7 +792,7 @@ impl ParametricCurve<2> for AngularSpline {
     /// belongs to the last piece. Outside the domain the curve stays at its end points (an
     /// Angular piece does not extrapolate: its formula is only valid for `s ∈ [0, 1]`).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, u: D) -> Vector2<D> {
-        use crate::symbolic::claim::{choose, unit_span, Condition};
+        use crate::branch::{choose, unit_span, Condition};
         let (a, b) = self.domain();
         let n = self.pieces();
         // beyond the ends the curve is a constant point; inside, piece j = ⌊u⌋ (the right
@@ -822,7 +822,7 @@ impl ParametricCurve<2> for AngularSpline {
     /// `[j, j + 1)`, piece `j = ⌊u⌋` (the last one closed); the half `[j, j + ½)` or
     /// `[j + ½, j + 1)` of an inflection piece, whose two arcs are two formulas.
     fn span_at(&self, u: f64) -> Option<crate::domain::Span> {
-        let whole = crate::symbolic::claim::unit_span(u, self.pieces());
+        let whole = crate::branch::unit_span(u, self.pieces());
         let j = whole.lo as usize;
         if self.kinds[j] != PieceKind::Inflection {
             return Some(whole);

@@ -364,8 +364,7 @@ impl<const N: usize> CubicSpline<N> {
 impl<const N: usize> ParametricCurve<N> for CubicSpline<N> {
     /// `s(x)` for any number type: at `x + ε` the derivative comes too, exact.
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
-        self.piece(crate::symbolic::claim::piece(&self.x, &x))
-            .eval(x)
+        self.piece(crate::branch::piece(&self.x, &x)).eval(x)
     }
 
     /// `[x₀, x_n]`.

@@ -73,7 +73,7 @@ impl<const N: usize> PiecewiseLinear<N> {
 impl<const N: usize> ParametricCurve<N> for PiecewiseLinear<N> {
     /// `p(x)` for any number type (end pieces extrapolated outside `[x₀, x_n]`).
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, x: D) -> SVector<D, N> {
-        let k = crate::symbolic::claim::piece(&self.x, &x);
+        let k = crate::branch::piece(&self.x, &x);
         // the chord in u = (x − xₖ)/(xₖ₊₁ − xₖ): exact at both nodes, and no slope that could
         // over- or underflow
         let u = (x - self.x[k]) / (self.x[k + 1] - self.x[k]);

@@ -83,7 +83,7 @@ pub(crate) fn chord<D: DualNum<Primitive = f64> + Copy, const N: usize>(
 ) -> SVector<D, N> {
     let diff = (y1 - y0).map(D::from);
     // two forms of one chord: which is taken does not change the formula
-    if crate::symbolic::claim::read_quietly(&u) <= 0.5 {
+    if crate::branch::read_quietly(&u) <= 0.5 {
         y0.map(D::from) + diff * u
     } else {
         y1.map(D::from) - diff * (-u + 1.0)

@@ -239,7 +239,7 @@ impl Lagrange {
     /// The scaled barycentric terms `λᵢ` at `t` (see [`Lagrange`]): `ℓᵢ(t) = λᵢ / Σⱼ λⱼ`.
     fn lambdas<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> Vec<D> {
         // the nearest node only steadies the rounding: every choice gives the same polynomial
-        let k = self.nearest(crate::symbolic::claim::read_quietly(&t));
+        let k = self.nearest(crate::branch::read_quietly(&t));
         let near = t - self.x[k];
         (0..self.x.len())
             .map(|i| {
@@ -271,12 +271,12 @@ impl Lagrange {
                 (
                     num + v * y,
                     den + v,
-                    size + crate::symbolic::claim::read_quietly(&v).abs(),
+                    size + crate::branch::read_quietly(&v).abs(),
                 )
             },
         );
         // the two barycentric forms are one polynomial: the choice is for rounding only
-        let d = crate::symbolic::claim::read_quietly(&den);
+        let d = crate::branch::read_quietly(&den);
         if d.is_finite() && d.abs() > 1e-8 * size {
             num / den * self.scale
         } else {
@@ -291,7 +291,7 @@ impl Lagrange {
     /// `W ℓ_{≠k}(t)` formed from logarithms so that it neither overflows nor underflows
     /// before it is applied (saturated at `f64::MAX`, where the interpolant itself overflows).
     fn first_form<D: DualNum<Primitive = f64> + Copy>(&self, t: D) -> D {
-        let x0 = crate::symbolic::claim::read_quietly(&t);
+        let x0 = crate::branch::read_quietly(&t);
         let k = self.nearest(x0);
         let near = t - self.x[k];
         let mut bracket = D::from(self.w[k] * self.y[k]);

@@ -235,12 +235,14 @@ pub(crate) struct Arena {
     /// Whether a trace is running (from its start to its end).
     pub(crate) live: bool,
     /// The conditions the traced code recorded where it picked a piece by a value
-    /// ([`super::claim::choose`]): node and interval of its values.
-    pub(crate) claims: Vec<(u32, super::claim::Condition)>,
+    /// ([`crate::branch::choose`]): node and interval of its values.
+    pub(crate) claims: Vec<(u32, crate::branch::Condition)>,
     /// Values read through `re()` without a condition (node and value).
     pub(crate) reads: Vec<(u32, f64)>,
     /// How a read through `re()` is recorded now.
     pub(crate) read_mode: super::claim::ReadMode,
+    /// The modes that choices and quiet reads in progress replaced (innermost last).
+    pub(crate) read_modes: Vec<super::claim::ReadMode>,
 }
 
 thread_local! {
@@ -278,6 +280,8 @@ impl Arena {
         self.branches = Vec::new();
         self.claims = Vec::new();
         self.reads = Vec::new();
+        self.read_modes = Vec::new();
+        crate::branch::observe(None);
     }
 
     /// Starts a trace: empties the arena (node 0 is the overflow marker) and takes a new
@@ -289,9 +293,11 @@ impl Arena {
         self.claims.clear();
         self.reads.clear();
         self.read_mode = super::claim::ReadMode::default();
+        self.read_modes.clear();
         self.overflowed = false;
         self.poisoned = false;
         self.live = true;
+        crate::branch::observe(Some(&super::claim::OBSERVER));
         // 2⁶⁴ traces cannot be started: the identity never wraps
         self.generation = NEXT_TRACE.fetch_add(1, Ordering::Relaxed);
         self.nodes.push(Node::TooLarge);

@@ -113,8 +113,8 @@ mod formulas;
 mod ops;
 mod print;
 
+pub use crate::branch::Condition;
 pub use canon::{MAX_EXPANDED_TERMS, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE};
-pub use claim::Condition;
 pub use display::{Math, MathTable};
 pub use expr::{Expr, Func, Node, MAX_NODES};
 pub use formulas::{
@@ -131,13 +131,6 @@ use std::cell::RefCell;
 thread_local! {
     /// The running trace's variables: names and values at the trace point.
     static VARS: RefCell<(Vec<String>, Vec<f64>)> = const { RefCell::new((Vec::new(), Vec::new())) };
-}
-
-/// Whether a symbolic trace is live on this thread: generic code that uses the numeric value
-/// of its argument beyond branching (a truncated Taylor expansion exact only for dual numbers
-/// of plain numbers) takes its exact form instead.
-pub(crate) fn tracing() -> bool {
-    ARENA.with(|a| a.borrow().live)
 }
 
 pub(crate) fn current_names() -> Vec<String> {
