@@ -10,8 +10,10 @@
 //!   [`ExpSurface`], [`FnSurface`] for closures).
 //! - [`HermitePatch`] (`H(s)ᵀ C H(t)`), [`BezierPatch`] (Bernstein and de Casteljau),
 //!   [`HermiteSurface`] (piecewise surfaces over partitions).
-//! - [`metrics`] and [`study`]: the report's error measure (MATLAB `norm`), max-abs, RMS,
-//!   the §3/§6 experiments and a convergence study.
+//! - [`study`]: the experiments — seed 000's Hermite error study ([`study::hermite_error`]: §3,
+//!   §6, convergence) and seed 004's Table I ([`study::table_i`]); [`metrics`]: the error
+//!   measures they use (a surface's per-coordinate errors, MATLAB `norm`, max-abs, RMS; a
+//!   curve's Hausdorff distance and smoothness).
 //! - [`ParametricCurve`]: a curve written once, generic over the number type, with exact
 //!   derivatives; [`KnotVector`], [`BSplineBasis`], [`BSplineCurve`], [`NurbsCurve`]:
 //!   B-splines and NURBS (seed 001), generic over dimension and number type.
@@ -48,13 +50,21 @@ pub use nalgebra;
 /// written over `num_dual::HyperDual64` uses the same types as the library.
 pub use num_dual;
 
+/// The README's Rust examples, compiled (and, but for the `no_run` ones, run) as doc tests, so
+/// that a renamed item breaks the build instead of the reader's first program (issue 28).
+#[cfg(all(doctest, feature = "report"))]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeExamples;
+
 pub mod bezier;
 pub mod blending;
 mod branch;
 pub mod bspline;
-pub mod comparison;
+/// The old path of [`study::table_i`], kept for one release (README, Changelog).
+pub use study::table_i as comparison;
 pub mod curve;
-pub mod curve_metrics;
+/// The old path of [`metrics::curve`], kept for one release (README, Changelog).
+pub use metrics::curve as curve_metrics;
 pub mod domain;
 pub mod error;
 pub mod grid;
@@ -109,10 +119,10 @@ pub use interp::linear::PiecewiseLinear;
 pub use interp::methods::{CubicEnd, Interpolant, Method};
 pub use interp::param::Parametrization;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
-pub use metrics::{compare, matlab_norm, CoordErrors};
+pub use metrics::surface::{compare, matlab_norm, CoordErrors};
 pub use nurbs::NurbsCurve;
 pub use shapes::Shape;
-pub use study::{
+pub use study::hermite_error::{
     convergence, spline_errors, uniform_spline_errors, ConvergenceOrders, ConvergenceRow,
     PatchEvaluation,
 };

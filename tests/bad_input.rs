@@ -58,7 +58,7 @@ use splinelab::interp::collocation::{
 };
 use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition};
 use splinelab::interp::RESIDUAL_TOLERANCE;
-use splinelab::metrics::ErrorAccumulator;
+use splinelab::metrics::surface::ErrorAccumulator;
 use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,

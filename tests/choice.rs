@@ -6,14 +6,14 @@ mod common;
 
 use common::hausdorff;
 use nalgebra::Vector2;
-use splinelab::comparison::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
-use splinelab::curve_metrics::sample_pieces;
 use splinelab::interp::choice::{
     fewest_points, search, Family, Minimality, SearchOptions, Target, FINAL_SAMPLES,
 };
 use splinelab::interp::methods::{CubicEnd, Method};
+use splinelab::metrics::curve::sample_pieces;
 use splinelab::seeds::seed004::{paper_points, TABLE_I};
 use splinelab::shapes::Shape;
+use splinelab::study::table_i::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
 use splinelab::Error;
 
 type V = Vector2<f64>;
@@ -240,7 +240,7 @@ fn a_polygon_with_few_vertices_gets_points_on_its_sides() {
     // the polygonal letter a's outer contour has 8 vertices; the Angular spline needs the 8
     // corners and a point inside every side (16 + 3 counted), more points than vertices
     let outer = &splinelab::seeds::seed004::polygonal_a()[0];
-    let tolerance = splinelab::comparison::contour_tolerance(std::slice::from_ref(outer));
+    let tolerance = splinelab::study::table_i::contour_tolerance(std::slice::from_ref(outer));
     let target = Target::polyline(outer, true, tolerance).unwrap();
     // the Angular spline rounds its corners (G¹, issue 23): whatever it reports is a valid
     // spline measured as claimed; the cubic spline draws the same contour within 1 %

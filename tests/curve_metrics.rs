@@ -10,7 +10,7 @@ use common::{
 };
 use nalgebra::Vector2;
 use proptest::prelude::*;
-use splinelab::curve_metrics::{
+use splinelab::metrics::curve::{
     curvature_profile, polyline_distances, sample_pieces, segment_distance, smoothness,
     SegmentTree, FLAT,
 };

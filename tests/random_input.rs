@@ -76,7 +76,7 @@ use splinelab::error::{MAX_COORDINATE, MAX_ELEMENTS};
 use splinelab::interp::collocation::{self, Condition, DerivativeOrder};
 use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition, NodeFamily};
 use splinelab::interp::RESIDUAL_TOLERANCE;
-use splinelab::metrics::ErrorAccumulator;
+use splinelab::metrics::surface::ErrorAccumulator;
 use splinelab::nurbs::MIN_WEIGHT_RATIO;
 use splinelab::tensor::{Net, NET_LIMIT};
 use splinelab::{
@@ -2008,7 +2008,7 @@ proptest! {
         family in select(vec![0usize, 1, 2, 3, 4]),
     ) {
         guard(|| {
-            use splinelab::curve_metrics::{polyline_distances, SegmentTree};
+            use splinelab::metrics::curve::{polyline_distances, SegmentTree};
             use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target};
             if let Ok(tree) = SegmentTree::new(&pts) {
                 let line = tree.points().to_vec();
@@ -2023,7 +2023,7 @@ proptest! {
                     if small {
                         let brute = line
                             .windows(2)
-                            .map(|w| splinelab::curve_metrics::segment_distance(*q, w[0], w[1]))
+                            .map(|w| splinelab::metrics::curve::segment_distance(*q, w[0], w[1]))
                             .fold(f64::INFINITY, f64::min);
                         prop_assert_eq!(d, brute);
                     }
@@ -2645,7 +2645,7 @@ proptest! {
         more in vec((-1.0f64..1.0, -1.0f64..1.0), 1..6),
     ) {
         guard(|| {
-            use splinelab::curve_metrics::{segment_distance, SegmentTree};
+            use splinelab::metrics::curve::{segment_distance, SegmentTree};
             let m = 10f64.powi(e);
             let (a, b) = (Vector2::new(v[0], v[1]) * m, Vector2::new(v[2], v[3]) * m);
             let p = if near < 0.5 {
@@ -2670,7 +2670,7 @@ proptest! {
     /// curve and the outline).
     #[test]
     fn the_point_search_keeps_its_bounds((outline, closed) in small_outline(), family in 0usize..5, max_points in 0usize..9) {
-        use splinelab::curve_metrics::{sample_pieces, segment_distance};
+        use splinelab::metrics::curve::{sample_pieces, segment_distance};
         use splinelab::interp::choice::{fewest_points, Family, SearchOptions, Target, FINAL_SAMPLES};
         let family = [Family::Angular, Family::Cardinal, Family::Cubic, Family::BSpline, Family::Linear][family];
         guard(|| {

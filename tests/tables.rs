@@ -6,7 +6,7 @@
 #[cfg(feature = "report")]
 use splinelab::report::seed000::tables;
 use splinelab::seeds::seed000::{agrees_to_printed, T3, T6};
-use splinelab::study::REPORT_PREC;
+use splinelab::study::hermite_error::REPORT_PREC;
 use splinelab::{convergence, uniform_spline_errors, PatchEvaluation, Rect, Torus};
 
 fn errors(side: f64, n: usize, m: usize, eval: PatchEvaluation) -> [f64; 3] {

@@ -138,7 +138,7 @@ pub fn vandermonde_condition(x: &[f64]) -> Result<Option<f64>> {
     if x.is_empty() {
         return Ok(None);
     }
-    let s = crate::metrics::singular_values(&vandermonde(x)?)?;
+    let s = crate::metrics::surface::singular_values(&vandermonde(x)?)?;
     let max = crate::error::derived("largest singular value of the Vandermonde matrix", s.max())?;
     let min = s.min();
     Ok((min > f64::EPSILON * max).then(|| max / min))

@@ -15,7 +15,7 @@ use crate::nurbs::NurbsCurve;
 use crate::report::error::Error;
 use crate::report::figure::Figure;
 use crate::seeds::seed000::T6;
-use crate::study::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
+use crate::study::hermite_error::{uniform_spline_errors, PatchEvaluation, REPORT_PREC};
 use crate::surface::{partials_on_grid_into, Torus};
 use nalgebra::{Vector2, Vector3};
 use std::f64::consts::TAU;
@@ -524,7 +524,7 @@ fn angular_curve_pointwise(k: usize) -> Result<Runner> {
 
 fn table_i(_: usize) -> Result<Runner> {
     Ok(Box::new(|| {
-        Ok(black_box(crate::comparison::table_i()?).len())
+        Ok(black_box(crate::study::table_i::table_i()?).len())
     }))
 }
 

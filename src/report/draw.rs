@@ -46,7 +46,7 @@ use crate::report::heatmap::{ColorScale, HeatMap};
 use crate::report::plot2d::{xy, Figure2d, Panel, Series, Style, INK, SAMPLES};
 use crate::report::render3d::{Figure3d, Marker, Scene, Segment, View};
 use crate::report::style::{LINE_PALETTE, PATCH_PALETTE};
-use crate::study::ConvergenceRow;
+use crate::study::hermite_error::ConvergenceRow;
 use crate::surface::{tabulate, SurfaceDerivatives};
 use nalgebra::{Vector2, Vector3};
 use plotters::style::RGBColor;
@@ -714,7 +714,7 @@ pub fn error_map<S: SurfaceDerivatives + ?Sized>(
     .into())
 }
 
-/// The convergence plot of a study ([`crate::study::convergence`]): max-abs error per
+/// The convergence plot of a study ([`crate::study::hermite_error::convergence`]): max-abs error per
 /// coordinate against the patch size `h`, log-log, with a reference slope `h⁴` one decade
 /// below the finest point.
 pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {

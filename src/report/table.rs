@@ -4,12 +4,12 @@
 //! (`Table::to_polars`) and any DataFrame converts to a frame (`Frame::try_from`).
 
 use crate::domain::Rect;
-use crate::metrics::CoordErrors;
+use crate::metrics::surface::CoordErrors;
 use crate::report::error::{io_err, Error, Result};
 use crate::report::files::write_atomic;
 pub use crate::report::frame::{Cell, Column, Frame, FrameError, Values};
 use crate::report::notebook::escape;
-use crate::study::{ConvergenceOrders, ConvergenceRow};
+use crate::study::hermite_error::{ConvergenceOrders, ConvergenceRow};
 use crate::surface::{partials_on_grid, SurfaceDerivatives};
 use nalgebra::Vector3;
 use std::fmt::Write as _;
@@ -336,7 +336,7 @@ pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> R
         .note("report_norm: the report's measure, the mean over patches of the matrix 2-norm of each patch's error samples (MATLAB norm); max_abs and rms over all samples."))
 }
 
-/// A convergence study ([`crate::study::convergence`]) as a table: per `n` and coordinate,
+/// A convergence study ([`crate::study::hermite_error::convergence`]) as a table: per `n` and coordinate,
 /// max-abs, RMS and the report's measure with the observed order against the previous row.
 ///
 /// # Errors
@@ -471,13 +471,13 @@ pub fn error_study<S: SurfaceDerivatives + Sync + ?Sized>(
     let rows = cases
         .iter()
         .map(|&(n, m)| {
-            let e = crate::study::uniform_spline_errors(
+            let e = crate::study::hermite_error::uniform_spline_errors(
                 surface,
                 rect,
                 n,
                 m,
                 prec,
-                crate::study::PatchEvaluation::HermiteMatrix,
+                crate::study::hermite_error::PatchEvaluation::HermiteMatrix,
             )?;
             Ok((format!("{n}×{m}"), e))
         })

@@ -13,10 +13,6 @@
 //! over extreme data that could loop is `risky` too (a child killed after 20 s).
 
 use super::*;
-use splinelab::curve_metrics::{
-    curvature_profile, distances_to, polyline_distances, sample_pieces, sample_pieces_into,
-    segment_distance, smoothness, Distances, SegmentTree, Smoothness,
-};
 use splinelab::interp::angular::{circumcircle, classify, PieceKind};
 use splinelab::interp::choice::bound::{
     circle_bound, convex_hull, sampled_circle_bound, segment_bound, widths,
@@ -25,6 +21,10 @@ use splinelab::interp::choice::symmetry::mirrors;
 use splinelab::interp::choice::{
     fewest_points, max_distinct_for, search, Choice, Family, Measure, Minimality, SearchOptions,
     Target, MAX_RANDOM_STARTS,
+};
+use splinelab::metrics::curve::{
+    curvature_profile, distances_to, polyline_distances, sample_pieces, sample_pieces_into,
+    segment_distance, smoothness, Distances, SegmentTree, Smoothness,
 };
 use splinelab::seeds::seed004::{
     coastline, decimate, evenly_spaced, paper_points, polygonal_a, COAST_STEP, SHAPES, TABLE_I,
@@ -2254,7 +2254,7 @@ fn choice_cases() -> Vec<Case> {
 // ---------------------------------------------------------------------------------------------
 
 fn comparison_cases() -> Vec<Case> {
-    use splinelab::comparison::{
+    use splinelab::study::table_i::{
         contour_tolerance, cross_methods, fewest_for_contours, pieces_changed, study_cell,
     };
     vec![

@@ -4,9 +4,9 @@
 use super::layout::Layout;
 use super::target::Target;
 use super::{Choice, Family, Scratch, Start, GOAL, SEARCH_SAMPLES};
-use crate::curve_metrics::{sample_pieces_into, SegmentTree};
 use crate::error::Result;
 use crate::interp::methods::Interpolant;
+use crate::metrics::curve::{sample_pieces_into, SegmentTree};
 
 /// The cardinal `a` set to the best of a coarse grid (other families: unchanged), with the
 /// error of the result.

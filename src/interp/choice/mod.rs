@@ -8,7 +8,7 @@
 //! reference vertex parameters are mapped linearly), on the polyline otherwise. The guides of
 //! an open Angular or cardinal curve (not drawn) are free points of the plane.
 //!
-//! **Error.** The symmetric Hausdorff distance ([`crate::curve_metrics`]) between the curve,
+//! **Error.** The symmetric Hausdorff distance ([`crate::metrics::curve`]) between the curve,
 //! sampled on each piece, and the reference; a configuration is accepted when it is at most
 //! the tolerance with [`FINAL_SAMPLES`] samples per piece.
 //!
@@ -72,9 +72,9 @@ mod target;
 pub use layout::{A_STEP, GUIDE_REACH};
 pub use target::{Target, CORNER_TURN};
 
-use crate::curve_metrics::{Distances, Smoothness};
 use crate::error::{Error, Result};
 use crate::interp::methods::{CubicEnd, Method};
+use crate::metrics::curve::{Distances, Smoothness};
 use layout::{candidates, Candidate};
 use local::{compass, equidistribute, finish, tune_parameter};
 use nalgebra::Vector2;

@@ -4,11 +4,11 @@
 use super::symmetry::{mirrors, Mirror};
 use super::{Measure, Scratch, FINAL_SAMPLES, SEARCH_SAMPLES};
 use crate::curve::ParametricCurve;
-use crate::curve_metrics::{
-    curvature_profile, distances_to, sample_pieces_into, segment_distance, smoothness, SegmentTree,
-};
 use crate::error::{Error, Result};
 use crate::interp::methods::Method;
+use crate::metrics::curve::{
+    curvature_profile, distances_to, sample_pieces_into, segment_distance, smoothness, SegmentTree,
+};
 use crate::shapes::Shape;
 use nalgebra::Vector2;
 

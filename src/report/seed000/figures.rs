@@ -14,7 +14,7 @@ use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::render3d::View;
 use crate::report::style::{codice14_color, CODICE14_COLORS, FACE_ALPHA, PATCH_PALETTE};
-use crate::study::REPORT_PREC;
+use crate::study::hermite_error::REPORT_PREC;
 use crate::surface::Torus;
 use plotters::style::RGBColor;
 use std::f64::consts::TAU;

@@ -8,7 +8,9 @@ use crate::report::error::Result;
 use crate::report::table::{self, frame, Table, COORDS};
 use crate::report::table::{Column, Frame};
 use crate::seeds::seed000::{agrees_to_printed, PrintedRow, T3, T6};
-use crate::study::{convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC};
+use crate::study::hermite_error::{
+    convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC,
+};
 use crate::surface::Torus;
 use nalgebra::Vector3;
 
@@ -181,7 +183,7 @@ pub const CONVERGENCE_NS: [usize; 7] = [1, 2, 4, 8, 16, 32, 64];
 ///
 /// # Errors
 /// Never in practice (the data are fixed and valid).
-pub fn torus_convergence() -> Result<Vec<crate::study::ConvergenceRow>> {
+pub fn torus_convergence() -> Result<Vec<crate::study::hermite_error::ConvergenceRow>> {
     Ok(convergence(
         &Torus::default(),
         &Rect::unit(),

@@ -1,11 +1,7 @@
-//! Seed 004's Table I regenerated ([`crate::comparison`]): the table of the 36 cells (printed,
+//! Seed 004's Table I regenerated ([`crate::study::table_i`]): the table of the 36 cells (printed,
 //! the paper's rule, the automatic choice), its 36 panels laid out as the paper's grid, the
 //! cross-method experiment, and the fewest points for the letters and the coastline.
 
-use crate::comparison::{
-    self, contour_tolerance, cross_methods, fewest_for_contours, CellStudy, ContourStudy, Verdict,
-    MAX_POINTS,
-};
 use crate::interp::choice::{Family, SearchOptions};
 use crate::interp::methods::{CubicEnd, Method};
 use crate::report::draw;
@@ -17,20 +13,24 @@ use crate::report::table::Column;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed004::{self as data, LETTER_FIGURES};
 use crate::shapes::TOLERANCE_FRACTION;
+use crate::study::table_i::{
+    self as study, contour_tolerance, cross_methods, fewest_for_contours, CellStudy, ContourStudy,
+    Verdict, MAX_POINTS,
+};
 use std::sync::OnceLock;
 
 static STUDY: OnceLock<Vec<CellStudy>> = OnceLock::new();
 
-/// The study of Table I's 36 cells ([`comparison::table_i`]), computed once per process (the
+/// The study of Table I's 36 cells ([`study::table_i`]), computed once per process (the
 /// table and the figure share it; the result is deterministic).
 ///
 /// # Errors
-/// The errors of [`comparison::table_i`].
+/// The errors of [`study::table_i`].
 pub fn study() -> Result<&'static [CellStudy]> {
     if let Some(s) = STUDY.get() {
         return Ok(s);
     }
-    let s = comparison::table_i()?;
+    let s = study::table_i()?;
     Ok(STUDY.get_or_init(|| s))
 }
 
@@ -56,7 +56,7 @@ pub fn table() -> Result<Table> {
     table_of(study()?)
 }
 
-/// [`table`] of a study a caller holds ([`comparison::table_i`]'s cells) — in a notebook,
+/// [`table`] of a study a caller holds ([`study::table_i`]'s cells) — in a notebook,
 /// where each cell links its own copy of the library and [`study`]'s cache does not outlive
 /// the cell, a variable keeps the study for the table, [`figure_of`], [`cross_of`] and
 /// [`conclusions_of`].
@@ -187,8 +187,7 @@ pub fn figure_of(cells: &[CellStudy]) -> Result<Figure> {
     let mut panels = Vec::with_capacity(36);
     // the paper's grid: rows are methods, columns shapes; TABLE_I is row by row
     for c in cells {
-        let target =
-            crate::interp::choice::Target::shape(&c.shape, comparison::REFERENCE_SEGMENTS)?;
+        let target = crate::interp::choice::Target::shape(&c.shape, study::REFERENCE_SEGMENTS)?;
         let title = format!("{}: {}", c.column, short_label(&c.automatic.method));
         let mut panel = draw::choice_panel(title, &target, &c.automatic)?;
         // the printed count beside ours, where the paper's cells had it
@@ -290,7 +289,7 @@ pub fn cross_of(cells: &[CellStudy]) -> Result<Table> {
         df,
     )
     .note("Each shape's automatic points of one method (table-i) are given to each other method with that method's own automatic parameter (a B-spline's order capped by the points); on the open shapes the guides go with the drawing method (the Angular and cardinal guides are taken off, a guided method gets its own automatic guides), and B-spline vertices count as points. own_points_error_pct: the drawing method's error with its own automatic points.")
-    .note(format!("absurd: refused by the method, or an error above {} % of the shape's size (5 tolerances: visibly another shape). {absurd} of {} pairs are absurd, {within} stay within 1 %: the paper's claim that point sets are method-specific, measured.", comparison::ABSURD, rows.len())))
+    .note(format!("absurd: refused by the method, or an error above {} % of the shape's size (5 tolerances: visibly another shape). {absurd} of {} pairs are absurd, {within} stay within 1 %: the paper's claim that point sets are method-specific, measured.", study::ABSURD, rows.len())))
 }
 
 /// The paper's coastline counts (Angular 92, cardinal 81, relaxed cubic 84) and its 1-in-50
@@ -521,7 +520,7 @@ fn judged(hits: usize, of: usize, supported: f64, contradicted: f64) -> &'static
 /// coastline.
 ///
 /// # Errors
-/// As [`study`], [`cross_methods`], [`fewest_study`] and [`comparison::pieces_changed`]; a ragged
+/// As [`study`], [`cross_methods`], [`fewest_study`] and [`study::pieces_changed`]; a ragged
 /// frame (an internal error).
 pub fn conclusions() -> Result<Table> {
     conclusions_of(study()?, fewest_study()?)
@@ -530,7 +529,7 @@ pub fn conclusions() -> Result<Table> {
 /// [`conclusions`] of studies a caller holds (see [`table_of`]).
 ///
 /// # Errors
-/// As [`cross_methods`] and [`comparison::pieces_changed`]; a ragged frame (an internal error).
+/// As [`cross_methods`] and [`study::pieces_changed`]; a ragged frame (an internal error).
 pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-conclusions";
     let cross = cross_methods(cells)?;
@@ -744,7 +743,7 @@ pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Re
     ]
     .iter()
     .map(|m| {
-        let changed = comparison::pieces_changed(m, &ellipse, true, 6, moved)?;
+        let changed = study::pieces_changed(m, &ellipse, true, 6, moved)?;
         let pieces = m.curve(&ellipse, true)?.breaks().len() - 1;
         Ok((m.label(), changed, pieces))
     })
@@ -858,6 +857,6 @@ pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Re
         "Seed 004: the paper's conclusions beside the evidence of our runs",
         df,
     )
-    .note("Claims in the paper's words (spec §6). Evidence: the automatic counts of table-i (tolerance 1 %), the cross-method table table-i-cross (within 1 % / absurd beyond 5 %), a locality measurement (comparison::pieces_changed: 12 points of the ellipse 0.4, closed, the seventh moved by (0.02, 0.02)), and table-seed004-fewest. Verdicts: supported / contradicted / mixed by the thresholds in report::seed004::table_i::conclusions; the paper judged by eye and ease of use as well, which no number here measures.")
+    .note("Claims in the paper's words (spec §6). Evidence: the automatic counts of table-i (tolerance 1 %), the cross-method table table-i-cross (within 1 % / absurd beyond 5 %), a locality measurement (study::pieces_changed: 12 points of the ellipse 0.4, closed, the seventh moved by (0.02, 0.02)), and table-seed004-fewest. Verdicts: supported / contradicted / mixed by the thresholds in report::seed004::table_i::conclusions; the paper judged by eye and ease of use as well, which no number here measures.")
     .note("Locality: the cardinal spline with Clark's tangents has the same 4-point support as the Angular spline, and a B-spline of order k < n + 1 changes k pieces; only the cubic spline is global (spec A13)."))
 }

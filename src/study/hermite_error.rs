@@ -5,7 +5,7 @@ use crate::bezier::patch::BezierPatch;
 use crate::domain::{Partition, Rect};
 use crate::error::{Error, Result};
 use crate::hermite::spline_surface::HermiteSurface;
-use crate::metrics::{CoordErrors, ErrorAccumulator};
+use crate::metrics::surface::{CoordErrors, ErrorAccumulator};
 use crate::surface::{tabulate, SurfaceDerivatives};
 use nalgebra::Vector3;
 
