@@ -2315,7 +2315,7 @@ fn interp_cases() -> Vec<Case> {
                         Ok(x) => ensure!(
                             x.windows(2).all(|w| w[0] < w[1]),
                             "{} nodes repeat: {x:?}",
-                            family.label()
+                            format_args!("{:?}", family)
                         ),
                     }
                 }
@@ -2415,8 +2415,9 @@ fn interp_cases() -> Vec<Case> {
             for p in Parametrization::ALL {
                 match p.parameters(&unequal_step_points()) {
                     Err(Error::RepeatedParameter { .. }) => {}
-                    Err(e) => return Err(format!("{}: unexpected {e:?}", p.label())),
-                    Ok(t) => check_parameters(&t).map_err(|e| format!("{}: {e}", p.label()))?,
+                    Err(e) => return Err(format!("{}: unexpected {e:?}", format_args!("{:?}", p))),
+                    Ok(t) => check_parameters(&t)
+                        .map_err(|e| format!("{}: {e}", format_args!("{:?}", p)))?,
                 }
             }
             Ok(())
@@ -2425,7 +2426,7 @@ fn interp_cases() -> Vec<Case> {
             let pts = [v2(-1e306, 0.0), v2(1e306, 0.0), v2(1e306, 2e306)];
             for p in Parametrization::ALL {
                 let t = ok(p.parameters(&pts))?;
-                check_parameters(&t).map_err(|e| format!("{}: {e}", p.label()))?;
+                check_parameters(&t).map_err(|e| format!("{}: {e}", format_args!("{:?}", p)))?;
             }
             Ok(())
         }),
@@ -2433,7 +2434,7 @@ fn interp_cases() -> Vec<Case> {
             let pts = [v2(0.0, 0.0), v2(5e-324, 0.0), v2(1e-323, 0.0)];
             for p in Parametrization::ALL {
                 let t = ok(p.parameters(&pts))?;
-                check_parameters(&t).map_err(|e| format!("{}: {e}", p.label()))?;
+                check_parameters(&t).map_err(|e| format!("{}: {e}", format_args!("{:?}", p)))?;
             }
             Ok(())
         }),
@@ -2690,10 +2691,10 @@ fn interp_cases() -> Vec<Case> {
                     ensure!(
                         out.iter().all(|v| v.is_finite()),
                         "{}: values_into not finite",
-                        end.label()
+                        format_args!("{:?}", end)
                     );
                     check_interpolates(&x, &y, |t| s.value(t))
-                        .map_err(|e| format!("{}: {e}", end.label()))?;
+                        .map_err(|e| format!("{}: {e}", format_args!("{:?}", end)))?;
                 }
                 Ok(())
             },
@@ -3295,7 +3296,7 @@ fn study_cases() -> Vec<Case> {
                             .iter()
                             .all(|v| v.iter().all(|x| x.is_finite())),
                         "{}: Ok with a non-finite measure: {e:?}",
-                        eval.label()
+                        format_args!("{:?}", eval)
                     ),
                 }
             }
@@ -3603,7 +3604,7 @@ fn blending_cases() -> Vec<Case> {
                         ensure!(
                             finite_grid(&ok(s.tabulate_cell((i, j), 9))?),
                             "{}: cell ({i}, {j})",
-                            b.label()
+                            format_args!("{:?}", b)
                         );
                     }
                 }
@@ -3870,7 +3871,11 @@ fn more_cases() -> Vec<Case> {
                 let b = ok(collocation::cubic_spline(&x, &yv, end))?;
                 for t in linspace(0.0, 1.0, 101) {
                     let (u, v) = (a.value(t), b.point(t).x);
-                    ensure!((u - v).abs() < 1e-9, "{}: t = {t}: {u} vs {v}", end.label());
+                    ensure!(
+                        (u - v).abs() < 1e-9,
+                        "{}: t = {t}: {u} vs {v}",
+                        format_args!("{:?}", end)
+                    );
                 }
             }
             Ok(())
@@ -4913,7 +4918,7 @@ fn seed004_cases() -> Vec<Case> {
                         ensure!(
                             c.is_ok(),
                             "{} on {} with {count}: {}",
-                            m.label(),
+                            format_args!("{:?}", m),
                             shape.name(),
                             show(&c)
                         );

@@ -60,7 +60,7 @@ fn automatic_counts_never_exceed_the_paper_rule_and_their_errors_hold() {
         // every cell has a count within 1 % (issue 25: the Angular rectangle too, its points
         // clustered at the corners, which the local search of issue 23 did not reach)
         assert!(auto.within_tolerance, "cell {index}: {auto:?}");
-        assert_ne!(study.verdict().0, Verdict::NoneWithin, "cell {index}");
+        assert_ne!(study.outcome(), Verdict::NoneWithin, "cell {index}");
         if let Some(rule) = &study.paper_rule {
             assert!(
                 auto.measure.counted <= rule.measure.counted,

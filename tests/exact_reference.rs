@@ -1751,8 +1751,8 @@ fn accepted<T, const N: usize>(
 }
 
 impl<const N: usize> SplineCase<N> {
-    fn end_label(&self) -> &'static str {
-        self.end.label()
+    fn end_label(&self) -> String {
+        format!("{:?}", self.end)
     }
 }
 

@@ -181,14 +181,14 @@ fn every_end_condition_interpolates_holds_and_is_c2() {
                 assert!(
                     (s.value(*xi) - yi).abs() <= EXACT,
                     "{} n = {n}: s({xi})",
-                    end.label()
+                    format_args!("{:?}", end)
                 );
             }
             let (r1, r2) = end_residuals(&s);
             assert!(
                 r1 <= END && r2 <= END,
                 "{} n = {n}: residuals {r1:e}, {r2:e}",
-                end.label()
+                format_args!("{:?}", end)
             );
             // C² at interior nodes: left and right pieces agree in value, s′ and s″
             for &xi in &x[1..n - 1] {
@@ -197,7 +197,7 @@ fn every_end_condition_interpolates_holds_and_is_c2() {
                     assert!(
                         (l[d].x - r[d].x).abs() <= 1e-6 * r[d].x.abs().max(1.0),
                         "{} n = {n}: derivative {d} at {xi}: {} vs {}",
-                        end.label(),
+                        format_args!("{:?}", end),
                         l[d].x,
                         r[d].x
                     );
@@ -330,7 +330,7 @@ fn tridiagonal_and_collocation_routes_agree() {
                 assert!(
                     (u - v).abs() <= ROUTES * u.abs().max(1.0),
                     "{} n = {n}, t = {t}: {u} vs {v}",
-                    end.label()
+                    format_args!("{:?}", end)
                 );
             }
         }
@@ -352,14 +352,14 @@ fn spline_curves_interpolate_in_2d_and_close_periodically() {
             assert!(
                 (s.point(*ti) - p).amax() <= 1e-12,
                 "{} at {ti}",
-                param.label()
+                format_args!("{:?}", param)
             );
         }
         let [d1a, d2a, d1b, d2b] = s.end_derivatives();
         assert!(
             (d1a - d1b).amax() <= END && (d2a - d2b).amax() <= END,
             "{}: not closed smoothly",
-            param.label()
+            format_args!("{:?}", param)
         );
     }
 }
@@ -379,7 +379,7 @@ fn collocation_curve_interpolation_passes_through_the_points() {
                 assert!(
                     (c.point(*ti) - p).amax() <= 1e-11,
                     "degree {degree}, {}",
-                    param.label()
+                    format_args!("{:?}", param)
                 );
             }
         }

@@ -89,7 +89,7 @@ fn every_printed_cell_builds_with_the_printed_count() {
         let curve = c
             .method
             .curve(&set.points, set.closed)
-            .unwrap_or_else(|e| panic!("{name}, {}: {e}", c.method.label()));
+            .unwrap_or_else(|e| panic!("{name}, {}: {e}", format_args!("{:?}", c.method)));
         let counted = c.method.counted_points(set.points.len(), set.closed);
         if c.note.contains("(?)") {
             assert_eq!(
@@ -97,7 +97,12 @@ fn every_printed_cell_builds_with_the_printed_count() {
                 "{name}: the impossible 5 becomes the 4 axis vertices + 3"
             );
         } else {
-            assert_eq!(counted, c.points, "{name}, {}", c.method.label());
+            assert_eq!(
+                counted,
+                c.points,
+                "{name}, {}",
+                format_args!("{:?}", c.method)
+            );
         }
         let line = curve.polyline(200).unwrap();
         assert!(line.iter().all(|p| p.iter().all(|x| x.is_finite())));
@@ -112,7 +117,7 @@ fn every_printed_cell_builds_with_the_printed_count() {
                     && p.y >= y0 - 0.3 * size
                     && p.y <= y1 + 0.3 * size,
                 "{name}, {}: {p:?}",
-                c.method.label()
+                format_args!("{:?}", c.method)
             );
         }
     }
@@ -152,7 +157,11 @@ fn closing_counts_follow_the_paper() {
     ] {
         let c = m.curve(&q, true).unwrap();
         let (a, b) = c.domain();
-        assert!((c.point(a) - c.point(b)).norm() <= 1e-12, "{}", m.label());
+        assert!(
+            (c.point(a) - c.point(b)).norm() <= 1e-12,
+            "{}",
+            format_args!("{:?}", m)
+        );
     }
 }
 
@@ -179,7 +188,7 @@ fn the_coastline_loads_and_decimates() {
         Method::Linear,
     ] {
         m.curve(&d, true)
-            .unwrap_or_else(|e| panic!("{}: {e}", m.label()));
+            .unwrap_or_else(|e| panic!("{}: {e}", format_args!("{:?}", m)));
     }
 }
 
@@ -196,7 +205,7 @@ fn the_polygonal_letter_is_two_closed_contours() {
     ] {
         for contour in &a {
             m.curve(contour, true)
-                .unwrap_or_else(|e| panic!("{}: {e}", m.label()));
+                .unwrap_or_else(|e| panic!("{}: {e}", format_args!("{:?}", m)));
         }
     }
 }

@@ -21,14 +21,6 @@ impl Blending {
             Blending::UniformBSpline => uniform_bspline4(u),
         }
     }
-
-    /// A short label.
-    pub fn label(self) -> &'static str {
-        match self {
-            Blending::Lagrange => "Lagrange 4-point",
-            Blending::UniformBSpline => "uniform cubic B-spline",
-        }
-    }
 }
 
 /// Seed 003's Lagrange blending functions for 4 points placed at `u = −1, 0, 1, 2`:

@@ -47,17 +47,6 @@ impl EndCondition<1> {
 }
 
 impl<const N: usize> EndCondition<N> {
-    /// A short label.
-    pub fn label(&self) -> &'static str {
-        match self {
-            EndCondition::Clamped { .. } => "clamped",
-            EndCondition::Natural => "natural (relaxed)",
-            EndCondition::Periodic => "periodic (cyclic)",
-            EndCondition::Cyclic => "cyclic (open ends)",
-            EndCondition::Anticyclic => "anticyclic",
-        }
-    }
-
     /// Fewest data points the condition needs.
     fn min_points(&self) -> usize {
         match self {

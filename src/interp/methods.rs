@@ -35,15 +35,6 @@ impl CubicEnd {
     /// The three, in the paper's order.
     pub const ALL: [CubicEnd; 3] = [CubicEnd::Relaxed, CubicEnd::Cyclic, CubicEnd::Anticyclic];
 
-    /// The paper's name.
-    pub fn label(self) -> &'static str {
-        match self {
-            CubicEnd::Relaxed => "relaxed",
-            CubicEnd::Cyclic => "cyclic",
-            CubicEnd::Anticyclic => "anticyclic",
-        }
-    }
-
     /// The spline end condition for closed or open data.
     pub fn condition(self, closed: bool) -> EndCondition<2> {
         match (self, closed) {
@@ -80,17 +71,6 @@ pub enum Method {
 }
 
 impl Method {
-    /// A label for figures and tables (`Cardinal (a = 0.83)`, `Cubic relaxed`, …).
-    pub fn label(&self) -> String {
-        match *self {
-            Method::Angular => "Angular".into(),
-            Method::Cardinal { a } => format!("Cardinal (a = {a})"),
-            Method::Cubic { end } => format!("Cubic {}", end.label()),
-            Method::BSpline { order } => format!("B-spline order {order}"),
-            Method::Linear => "Linear".into(),
-        }
-    }
-
     /// The method's family name (`Angular`, `Cardinal`, `Cubic`, `B-spline`, `Linear`).
     pub fn family(&self) -> &'static str {
         match self {

@@ -34,15 +34,6 @@ impl Parametrization {
         Parametrization::Centripetal,
     ];
 
-    /// A short label.
-    pub fn label(self) -> &'static str {
-        match self {
-            Parametrization::Uniform => "uniform",
-            Parametrization::ChordLength => "chord length",
-            Parametrization::Centripetal => "centripetal",
-        }
-    }
-
     /// The parameters of `points`, `t₀ = 0`, `t_n = 1`, strictly increasing — checked on the
     /// computed values, not only on the steps: a step below the rounding of the running sum
     /// (a chord `10⁻²⁰` after one of length 1) would repeat a parameter. Coordinates near the

@@ -328,14 +328,6 @@ pub enum NodeFamily {
 }
 
 impl NodeFamily {
-    /// A short label.
-    pub fn label(self) -> &'static str {
-        match self {
-            NodeFamily::Equispaced => "equispaced",
-            NodeFamily::Chebyshev => "Chebyshev",
-        }
-    }
-
     /// The `degree + 1` nodes on `[a, b]`.
     ///
     /// # Errors

@@ -43,6 +43,7 @@ use crate::hermite::spline_surface::HermiteSurface;
 use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::heatmap::{ColorScale, HeatMap};
+use crate::report::legend::Legend;
 use crate::report::plot2d::{xy, Figure2d, Panel, Series, Style, INK, SAMPLES};
 use crate::report::render3d::{Figure3d, Marker, Scene, Segment, View};
 use crate::report::style::{LINE_PALETTE, PATCH_PALETTE};
@@ -577,7 +578,7 @@ pub fn choice(
 ) -> Result<Figure> {
     let title = format!(
         "the fewest points found: {} within {:.2} % of the size",
-        choice.method.label(),
+        choice.method.legend(),
         100.0 * target.tolerance() / target.size()
     );
     Ok(panels(
@@ -608,7 +609,7 @@ pub fn methods(
         .map(|(method, points, closed)| {
             let counted = method.counted_points(points.len(), *closed);
             let drawn = method.prepared(points, *closed);
-            let title = format!("{} — {counted} points", method.label());
+            let title = format!("{} — {counted} points", method.legend());
             match method.curve(points, *closed) {
                 Ok(curve) => interpolation(
                     title,

@@ -101,7 +101,11 @@ values_from!(Float: f64 => |x: f64| x);
 values_from!(Int: i64 => |x: i64| x, i32 => i64::from);
 values_from!(UInt: u64 => |x: u64| x, u32 => u64::from, usize => |x: usize| x as u64);
 values_from!(Bool: bool => |x: bool| x);
-values_from!(Text: String => |x: String| x, &str => |x: &str| x.to_string());
+values_from!(
+    Text: String => |x: String| x,
+    &str => |x: &str| x.to_string(),
+    std::borrow::Cow<'_, str> => std::borrow::Cow::into_owned,
+);
 
 /// A named column.
 #[derive(Debug, Clone, PartialEq)]

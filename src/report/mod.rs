@@ -8,7 +8,8 @@
 //! - [`table`](mod@table): a [`Table`] (a [`frame::Frame`], title, notes) from any tabulation, error
 //!   study or convergence study; Markdown, HTML and CSV for any frame (and, with the
 //!   `polars` feature, for any polars DataFrame through `Frame::try_from`).
-//! - [`frame`]: named columns of numbers, integers, flags or text, the data of a table.
+//! - [`frame`]: named columns of numbers, integers, flags or text, the data of a table;
+//!   [`record`]: a table from a slice of row structs ([`crate::record!`]).
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas, labelled values.
 //! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
@@ -26,8 +27,10 @@ mod files;
 pub mod formula_corpus;
 pub mod frame;
 pub mod heatmap;
+pub mod legend;
 pub mod notebook;
 pub mod plot2d;
+pub mod record;
 pub mod render3d;
 pub mod seed000;
 pub mod seed001;
@@ -40,6 +43,7 @@ pub mod table;
 
 pub use error::{Error, Result};
 pub use figure::Figure;
+pub use legend::Legend;
 pub use table::Table;
 
 use std::path::{Path, PathBuf};

@@ -34,15 +34,6 @@ impl PatchEvaluation {
         PatchEvaluation::DeCasteljau,
         PatchEvaluation::ReportListing,
     ];
-
-    /// A short label for tables.
-    pub fn label(&self) -> &'static str {
-        match self {
-            PatchEvaluation::HermiteMatrix => "Hermite matrix form",
-            PatchEvaluation::DeCasteljau => "de Casteljau, correct net",
-            PatchEvaluation::ReportListing => "report's listing (Codice 7 as printed)",
-        }
-    }
 }
 
 /// Codice 14 for any surface and partitions: every patch of the Hermite spline is tabulated

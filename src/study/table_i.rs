@@ -107,81 +107,18 @@ pub enum Verdict {
     NoneWithin,
 }
 
-impl Verdict {
-    /// `agrees`, `fewer`, `more`.
-    pub fn label(&self) -> &'static str {
-        match self {
-            Verdict::Agrees => "agrees",
-            Verdict::Fewer => "fewer",
-            Verdict::More => "more",
-            Verdict::NoneWithin => "none within 1 %",
-        }
-    }
-}
-
 impl CellStudy {
-    /// The verdict and why, in words: whether the printed configuration meets our tolerance
-    /// with the paper's rule, what the search chose differently, the printed count that
-    /// cannot be (A20).
-    pub fn verdict(&self) -> (Verdict, String) {
-        let printed = self.cell.points;
-        let ours = self.automatic.measure.counted;
-        let verdict = match ours.cmp(&printed) {
-            _ if !self.automatic.within_tolerance => Verdict::NoneWithin,
+    /// How the automatic count compares with the printed one (the words of why are the
+    /// report layer's: `CellStudy::verdict`, feature `report`).
+    pub fn outcome(&self) -> Verdict {
+        if !self.automatic.within_tolerance {
+            return Verdict::NoneWithin;
+        }
+        match self.automatic.measure.counted.cmp(&self.cell.points) {
             std::cmp::Ordering::Equal => Verdict::Agrees,
             std::cmp::Ordering::Less => Verdict::Fewer,
             std::cmp::Ordering::Greater => Verdict::More,
-        };
-        let pct = |e: f64| 100.0 * e / self.size;
-        let printed_error = self.printed.measure.distances.hausdorff();
-        let mut why = Vec::new();
-        let impossible = self.printed.measure.counted != printed;
-        if impossible {
-            why.push(format!(
-                "the printed {printed} cannot be drawn ({}); the rule draws {}",
-                if self.cell.note.is_empty() {
-                    "the method needs another count"
-                } else {
-                    self.cell.note
-                },
-                self.printed.measure.counted
-            ));
         }
-        if printed_error <= self.tolerance {
-            why.push(format!(
-                "the printed count meets 1 % with the paper's rule ({:.2} %)",
-                pct(printed_error)
-            ));
-        } else {
-            why.push(format!(
-                "the printed count with the paper's rule misses 1 % ({:.2} %)",
-                pct(printed_error)
-            ));
-        }
-        match verdict {
-            Verdict::Fewer => {
-                let changed = if self.automatic.method == self.cell.method {
-                    "placement optimised".to_string()
-                } else {
-                    format!(
-                        "placement optimised, {} instead of {}",
-                        self.automatic.method.label(),
-                        self.cell.method.label()
-                    )
-                };
-                why.push(changed);
-            }
-            Verdict::More if impossible && ours <= self.printed.measure.counted => {}
-            Verdict::More => why.push(format!(
-                "no placement found with fewer than {ours} meets 1 % (our tolerance is stricter than the paper's eye, or the search is local)"
-            )),
-            Verdict::Agrees => {}
-            Verdict::NoneWithin => why.push(format!(
-                "no configuration found up to {MAX_POINTS} points meets 1 %; auto_* shows the smallest error found ({:.2} % with {ours})",
-                pct(self.automatic.measure.distances.hausdorff())
-            )),
-        }
-        (verdict, why.join("; "))
     }
 }
 

@@ -91,7 +91,11 @@ fn six_points(scale: f64) -> Vec<Vector2<f64>> {
 /// points interpolated (the B-spline: its end control points) to `1e-13` of their scale.
 fn check_curve(m: &Method, points: &[Vector2<f64>], closed: bool, c: &Interpolant) -> CaseResult {
     let line = ok(c.polyline(257))?;
-    ensure!(finite_vecs(&line), "{}: a sample is not finite", m.label());
+    ensure!(
+        finite_vecs(&line),
+        "{}: a sample is not finite",
+        format_args!("{:?}", m)
+    );
     let all = m.prepared(points, closed);
     let scale = all
         .iter()
@@ -103,12 +107,21 @@ fn check_curve(m: &Method, points: &[Vector2<f64>], closed: bool, c: &Interpolan
         Method::BSpline { .. } => {
             let (a, b) = c.domain();
             let e = miss(a, &all[0]).max(miss(b, &all[all.len() - 1]));
-            ensure!(e <= tol, "{}: misses its end points by {e:e}", m.label());
+            ensure!(
+                e <= tol,
+                "{}: misses its end points by {e:e}",
+                format_args!("{:?}", m)
+            );
         }
         Method::Angular | Method::Cardinal { .. } => {
             for (j, p) in all[1..all.len() - 1].iter().enumerate() {
                 let e = miss(j as f64, p);
-                ensure!(e <= tol, "{}: misses point {} by {e:e}", m.label(), j + 1);
+                ensure!(
+                    e <= tol,
+                    "{}: misses point {} by {e:e}",
+                    format_args!("{:?}", m),
+                    j + 1
+                );
             }
         }
         Method::Cubic { .. } | Method::Linear => {
@@ -116,13 +129,17 @@ fn check_curve(m: &Method, points: &[Vector2<f64>], closed: bool, c: &Interpolan
             ensure!(
                 breaks.len() == all.len(),
                 "{}: {} breaks for {} points",
-                m.label(),
+                format_args!("{:?}", m),
                 breaks.len(),
                 all.len()
             );
             for (j, (t, p)) in breaks.iter().zip(&all).enumerate() {
                 let e = miss(*t, p);
-                ensure!(e <= tol, "{}: misses point {j} by {e:e}", m.label());
+                ensure!(
+                    e <= tol,
+                    "{}: misses point {j} by {e:e}",
+                    format_args!("{:?}", m)
+                );
             }
         }
     }
@@ -142,7 +159,7 @@ fn each_method(scale: f64, allowed: fn(&Error) -> bool) -> CaseResult {
                 Err(e) => {
                     return Err(format!(
                         "{} (closed = {closed}) at scale {scale:e}: unexpected Err({e})",
-                        m.label()
+                        format_args!("{:?}", m)
                     ))
                 }
             }
@@ -164,7 +181,7 @@ fn each_method_refuses(bad: f64, expected: fn(&Error) -> bool) -> CaseResult {
                     other => {
                         return Err(format!(
                             "{} (closed = {closed}) with {bad:e} at coordinate {k}: {}",
-                            m.label(),
+                            format_args!("{:?}", m),
                             show(&other)
                         ))
                     }
@@ -359,7 +376,9 @@ fn seed004api_cases() -> Vec<Case> {
                     for m in all_methods() {
                         for count in [usize::MAX, usize::MAX - 2, 1 << 40, MAX_ELEMENTS + 1] {
                             expect_err!(paper_points(&shape, &m, count), Error::TooLarge { .. })
-                                .map_err(|e| format!("{name}, {}, {count}: {e}", m.label()))?;
+                                .map_err(|e| {
+                                    format!("{name}, {}, {count}: {e}", format_args!("{:?}", m))
+                                })?;
                         }
                     }
                 }
@@ -371,7 +390,7 @@ fn seed004api_cases() -> Vec<Case> {
                 for shape in shapes_with(bad) {
                     for m in all_methods() {
                         expect_err!(paper_points(&shape, &m, 7), Error::NotPositive { .. })
-                            .map_err(|e| format!("{shape:?}, {}: {e}", m.label()))?;
+                            .map_err(|e| format!("{shape:?}, {}: {e}", format_args!("{:?}", m)))?;
                     }
                 }
             }
@@ -437,10 +456,11 @@ fn seed004api_cases() -> Vec<Case> {
                             ) => {}
                             Ok(set) => bad.push(format!(
                                 "{shape:?}, {}: Ok({:?})",
-                                m.label(),
+                                format_args!("{:?}", m),
                                 &set.points[..set.points.len().min(3)]
                             )),
-                            Err(e) => bad.push(format!("{shape:?}, {}: Err({e})", m.label())),
+                            Err(e) => bad
+                                .push(format!("{shape:?}, {}: Err({e})", format_args!("{:?}", m))),
                         }
                     }
                 }
@@ -467,7 +487,11 @@ fn seed004api_cases() -> Vec<Case> {
                     Method::Linear,
                 ] {
                     let set = ok(paper_points(&shape, &m, 9))?;
-                    ensure!(finite_vecs(&set.points), "{shape:?}, {}", m.label());
+                    ensure!(
+                        finite_vecs(&set.points),
+                        "{shape:?}, {}",
+                        format_args!("{:?}", m)
+                    );
                 }
             }
             Ok(())
@@ -499,10 +523,14 @@ fn seed004api_cases() -> Vec<Case> {
             for c in TABLE_I {
                 let (name, shape) = SHAPES[c.column];
                 let set = ok(paper_points(&shape, &c.method, c.points))
-                    .map_err(|e| format!("{name}, {}: {e}", c.method.label()))?;
-                ensure!(finite_vecs(&set.points), "{name}, {}", c.method.label());
+                    .map_err(|e| format!("{name}, {}: {e}", format_args!("{:?}", c.method)))?;
+                ensure!(
+                    finite_vecs(&set.points),
+                    "{name}, {}",
+                    format_args!("{:?}", c.method)
+                );
                 let curve = ok(c.method.curve(&set.points, set.closed))
-                    .map_err(|e| format!("{name}, {}: {e}", c.method.label()))?;
+                    .map_err(|e| format!("{name}, {}: {e}", format_args!("{:?}", c.method)))?;
                 if !matches!(c.method, Method::BSpline { .. }) {
                     check_curve(&c.method, &set.points, set.closed, &curve)
                         .map_err(|e| format!("{name}: {e}"))?;
@@ -584,7 +612,7 @@ fn seed004api_cases() -> Vec<Case> {
                         Ok(c) => check_curve(&m, &d, true, &c)?,
                         // the Angular spline refuses a collinear triple of the ring
                         Err(Error::NoSmoothPiece { .. }) if m == Method::Angular => {}
-                        Err(e) => return Err(format!("{}: {e}", m.label())),
+                        Err(e) => return Err(format!("{}: {e}", format_args!("{:?}", m))),
                     }
                 }
                 Ok(())
@@ -670,7 +698,10 @@ fn seed004api_cases() -> Vec<Case> {
                             _ => Err(format!("expected TooFewPoints, got {}", show(&r))),
                         }
                         .map_err(|e| {
-                            format!("{}, {n} points, closed = {closed}: {e}", m.label())
+                            format!(
+                                "{}, {n} points, closed = {closed}: {e}",
+                                format_args!("{:?}", m)
+                            )
                         })?;
                     }
                 }
@@ -744,7 +775,7 @@ fn seed004api_cases() -> Vec<Case> {
                 Method::Linear,
             ] {
                 expect_err!(m.curve(&p, false), Error::RepeatedPoint { .. })
-                    .map_err(|e| format!("{}: {e}", m.label()))?;
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", m)))?;
             }
             Ok(())
         }),
@@ -758,12 +789,12 @@ fn seed004api_cases() -> Vec<Case> {
                     ensure!(
                         b.len() >= 2 && b[0] == lo && b[b.len() - 1] == hi,
                         "{}: breaks {b:?}, domain [{lo}, {hi}]",
-                        m.label()
+                        format_args!("{:?}", m)
                     );
                     ensure!(
                         b.windows(2).all(|w| w[0] < w[1]),
                         "{}: breaks not increasing {b:?}",
-                        m.label()
+                        format_args!("{:?}", m)
                     );
                 }
             }
@@ -774,7 +805,7 @@ fn seed004api_cases() -> Vec<Case> {
                 ensure!(
                     m.counted_points(usize::MAX, true) == usize::MAX,
                     "{}",
-                    m.label()
+                    format_args!("{:?}", m)
                 );
                 ensure!(m.counted_points(usize::MAX, false) == usize::MAX, "open");
             }
@@ -2238,7 +2269,7 @@ fn choice_cases() -> Vec<Case> {
         }),
         case("choice::family_of_every_method", || {
             for m in all_methods() {
-                ensure!(Family::of(&m).is_some(), "{}", m.label());
+                ensure!(Family::of(&m).is_some(), "{}", format_args!("{:?}", m));
             }
             ensure!(
                 Family::of(&Method::Cardinal { a: f64::NAN }) == Some(Family::Cardinal),
@@ -2379,7 +2410,7 @@ fn comparison_cases() -> Vec<Case> {
                         pieces_changed(&m, &six_points(1.0), false, 2, v2(d[0], d[1])),
                         Error::NonFinite { .. }
                     )
-                    .map_err(|e| format!("{}: {e}", m.label()))?;
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", m)))?;
                 }
                 Ok(())
             })
@@ -2401,7 +2432,11 @@ fn comparison_cases() -> Vec<Case> {
             || {
                 for m in all_methods() {
                     let n = ok(pieces_changed(&m, &six_points(1.0), false, 2, v2(0.0, 0.0)))?;
-                    ensure!(n == 0, "{}: {n} pieces change without a move", m.label());
+                    ensure!(
+                        n == 0,
+                        "{}: {n} pieces change without a move",
+                        format_args!("{:?}", m)
+                    );
                     let n = ok(pieces_changed(
                         &m,
                         &six_points(1.0),
@@ -2409,7 +2444,11 @@ fn comparison_cases() -> Vec<Case> {
                         2,
                         v2(5e-324, 0.0),
                     ))?;
-                    ensure!(n == 0, "{}: {n} pieces change by 5e-324", m.label());
+                    ensure!(
+                        n == 0,
+                        "{}: {n} pieces change by 5e-324",
+                        format_args!("{:?}", m)
+                    );
                 }
                 Ok(())
             },
@@ -2630,9 +2669,10 @@ fn refit_cases() -> Vec<Case> {
                     &[1.0, 0.0, 1.0],
                     end,
                 ))?;
-                let s =
-                    ok(s.refit_function(&x, &y)).map_err(|e| format!("{}: {e}", end.label()))?;
-                check_function(&s, &x, &y).map_err(|e| format!("{}: {e}", end.label()))?;
+                let s = ok(s.refit_function(&x, &y))
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", end)))?;
+                check_function(&s, &x, &y)
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", end)))?;
             }
             Ok(())
         }),
@@ -2674,7 +2714,7 @@ fn collocation_solves(x: &[f64], y: &[f64], end: EndCondition<1>) -> CaseResult 
         ensure!(
             e <= RESIDUAL_TOLERANCE * scale,
             "{}: misses {yi} at {xi} by {e:e}",
-            end.label()
+            format_args!("{:?}", end)
         );
     }
     let line = ok(c.polyline(200))?;
@@ -4039,7 +4079,12 @@ mod report {
                                     .map_err(|e| format!("version {v}: {e}"))?,
                                 // the polygonal letter's collinear triples
                                 Err(Error::NoSmoothPiece { .. }) if m == Method::Angular => {}
-                                Err(e) => return Err(format!("version {v}, {}: {e}", m.label())),
+                                Err(e) => {
+                                    return Err(format!(
+                                        "version {v}, {}: {e}",
+                                        format_args!("{:?}", m)
+                                    ))
+                                }
                             }
                         }
                     }

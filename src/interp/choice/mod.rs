@@ -161,24 +161,6 @@ pub enum Start {
     Pruned,
 }
 
-impl Start {
-    /// `arc length`, `turning`, `shape parameter`, `corners`, `symmetric`, `random`,
-    /// `given`, `least-squares fit`, `pruned`.
-    pub fn label(self) -> &'static str {
-        match self {
-            Start::ArcLength => "arc length",
-            Start::Turning => "turning",
-            Start::ShapeParameter => "shape parameter",
-            Start::Corners => "corners",
-            Start::Symmetric => "symmetric",
-            Start::Random => "random",
-            Start::Known => "given",
-            Start::Fit => "least-squares fit",
-            Start::Pruned => "pruned",
-        }
-    }
-}
-
 /// Which method the search chooses points for (its parameter is chosen too).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Family {

@@ -13,6 +13,7 @@ use crate::interp::polynomial::{runge, Lagrange, NodeFamily, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Result;
 use crate::report::figure::Figure;
+use crate::report::legend::Legend;
 use crate::report::plot2d::{
     sampled, trace, xy, Figure2d, Panel, Series, Style, GREY, INK as BLACK, SAMPLES,
 };
@@ -204,7 +205,7 @@ pub fn runge_figure() -> Result<Figure> {
         let color = C[k];
         top = top
             .with(Series::line(
-                format!("p{degree}, {} nodes", family.label()),
+                format!("p{degree}, {} nodes", family.legend()),
                 sampled(a, b, |t| (t, p.eval(t))),
                 color,
             ))
@@ -231,7 +232,7 @@ pub fn runge_figure() -> Result<Figure> {
             .map(|r| (r.degree as f64, r.error(family)))
             .collect();
         bottom = bottom.with(
-            Series::line(format!("{} nodes", family.label()), pts, C[k])
+            Series::line(format!("{} nodes", family.legend()), pts, C[k])
                 .styled(Style::LinePoints(4)),
         );
     }
@@ -255,7 +256,7 @@ pub fn parametrizations() -> Result<Figure> {
     .with(Series::line("data", xy(&points), BLACK).styled(Style::Points(6)));
     for (k, param) in Parametrization::ALL.into_iter().enumerate() {
         let s = CubicSpline::curve(&points, param, EndCondition::Natural)?;
-        panel = panel.with(Series::line(param.label(), trace(&s)?, C[k]).width(3));
+        panel = panel.with(Series::line(param.legend(), trace(&s)?, C[k]).width(3));
     }
     Ok(Figure::from(Figure2d::new(
         "Parametrization of interpolation points (seed 001)",
@@ -295,11 +296,11 @@ pub fn cubic_spline_ends() -> Result<Figure> {
             Style::Line
         };
         top = top.with(
-            Series::line(end.label(), sampled(a, b, |t| (t, s.value(t))), C[k]).styled(style),
+            Series::line(end.legend(), sampled(a, b, |t| (t, s.value(t))), C[k]).styled(style),
         );
         bottom = bottom.with(
             Series::line(
-                end.label(),
+                end.legend(),
                 sampled(a, b, |t| (t, floored(s.value(t) - t.sin()))),
                 C[k],
             )

@@ -10,11 +10,36 @@ use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RUNGE_INTERVAL};
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Result;
+use crate::report::legend::Legend;
 use crate::report::table::Column;
 use crate::report::table::{frame, Table};
 use crate::seeds::seed000::agrees_to_printed;
 use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
+
+/// One of seed 001's knot vectors: what it is, as printed, as constructed, its degree, and
+/// whether the construction equals the printed values (`None` where the example is data).
+struct KnotExample {
+    name: &'static str,
+    printed: &'static str,
+    knots: KnotVector,
+    degree: usize,
+    same: Option<bool>,
+}
+
+crate::record! {
+    /// A row of the knot-vector table.
+    struct KnotRow {
+        example: String => "example",
+        printed: String => "printed",
+        ours: String => "ours",
+        equal_to_printed: Option<bool> => "equal_to_printed",
+        degree: u32 => "degree",
+        open: bool => "open",
+        uniform: bool => "uniform",
+        basis_functions: u32 => "basis_functions",
+    }
+}
 
 /// Seed 001's knot vectors: the extended partition reproduced, the examples' properties.
 ///
@@ -30,78 +55,70 @@ pub fn knot_vectors() -> Result<Table> {
         data::EXTENDED_ORDER,
         EndKnots::Spaced(data::EXTENDED_SPACING),
     )?;
-    let rows: Vec<(&str, &str, KnotVector, usize, Option<bool>)> = vec![
-        (
-            "extended partition: [0,1], m = 4, Δ = {1/2, 3/4}, M = {1, 2}, end spacing 1/4",
-            data::EXTENDED_PRINTED,
-            extended.clone(),
-            3,
-            Some(extended.knots() == data::EXTENDED_PRINTED_VALUES),
-        ),
-        (
-            "open, n = 2 (KnotVector::open_uniform(2, 4, 0, 1))",
-            "[0, 0, 0, 1/2, 1, 1, 1]",
-            KnotVector::open_uniform(2, 4, 0.0, 1.0)?,
-            2,
-            None,
-        ),
-        (
-            "basis example n = 1",
-            "(0, 0, 1, 2, 3, 4, 5, 5)",
-            KnotVector::try_new(data::BASIS_N1.to_vec())?,
-            1,
-            None,
-        ),
-        (
-            "basis example n = 2",
-            "(0, 0, 0, 1, 2, 3, 4, 4, 4)",
-            KnotVector::try_new(data::BASIS_N2.to_vec())?,
-            2,
-            None,
-        ),
-        (
-            "cubic curve example (KnotVector::open_uniform(3, 7, 0, 1))",
-            "{0, 0, 0, 0, 1/4, 1/2, 3/4, 1, 1, 1, 1}",
-            KnotVector::open_uniform(3, 7, 0.0, 1.0)?,
-            3,
-            Some(KnotVector::open_uniform(3, 7, 0.0, 1.0)?.knots() == data::LOCALITY_KNOTS),
-        ),
-        (
-            "quadratic curve example (KnotVector::open_uniform(2, 10, 0, 1))",
-            "{0, 0, 0, 1/8, …, 7/8, 1, 1, 1}",
-            KnotVector::open_uniform(2, 10, 0.0, 1.0)?,
-            2,
-            None,
-        ),
+    let cubic = KnotVector::open_uniform(3, 7, 0.0, 1.0)?;
+    let examples = [
+        KnotExample {
+            name: "extended partition: [0,1], m = 4, Δ = {1/2, 3/4}, M = {1, 2}, end spacing 1/4",
+            printed: data::EXTENDED_PRINTED,
+            same: Some(extended.knots() == data::EXTENDED_PRINTED_VALUES),
+            knots: extended,
+            degree: 3,
+        },
+        KnotExample {
+            name: "open, n = 2 (KnotVector::open_uniform(2, 4, 0, 1))",
+            printed: "[0, 0, 0, 1/2, 1, 1, 1]",
+            knots: KnotVector::open_uniform(2, 4, 0.0, 1.0)?,
+            degree: 2,
+            same: None,
+        },
+        KnotExample {
+            name: "basis example n = 1",
+            printed: "(0, 0, 1, 2, 3, 4, 5, 5)",
+            knots: KnotVector::try_new(data::BASIS_N1.to_vec())?,
+            degree: 1,
+            same: None,
+        },
+        KnotExample {
+            name: "basis example n = 2",
+            printed: "(0, 0, 0, 1, 2, 3, 4, 4, 4)",
+            knots: KnotVector::try_new(data::BASIS_N2.to_vec())?,
+            degree: 2,
+            same: None,
+        },
+        KnotExample {
+            name: "cubic curve example (KnotVector::open_uniform(3, 7, 0, 1))",
+            printed: "{0, 0, 0, 0, 1/4, 1/2, 3/4, 1, 1, 1, 1}",
+            same: Some(cubic.knots() == data::LOCALITY_KNOTS),
+            knots: cubic,
+            degree: 3,
+        },
+        KnotExample {
+            name: "quadratic curve example (KnotVector::open_uniform(2, 10, 0, 1))",
+            printed: "{0, 0, 0, 1/8, …, 7/8, 1, 1, 1}",
+            knots: KnotVector::open_uniform(2, 10, 0.0, 1.0)?,
+            degree: 2,
+            same: None,
+        },
     ];
-    let (mut example, mut printed, mut ours, mut agrees) = (vec![], vec![], vec![], vec![]);
-    let (mut degree, mut open, mut uniform, mut count) = (vec![], vec![], vec![], vec![]);
-    for (name, text, knots, p, same) in rows {
-        example.push(name.to_string());
-        printed.push(text.to_string());
-        ours.push(knots.to_string());
-        agrees.push(same);
-        degree.push(p as u32);
-        open.push(knots.is_open(p));
-        uniform.push(knots.is_uniform());
-        count.push(BSplineBasis::try_new(knots, p)?.len() as u32);
-    }
+    let rows = examples
+        .into_iter()
+        .map(|e| {
+            Ok(KnotRow {
+                example: e.name.into(),
+                printed: e.printed.into(),
+                ours: e.knots.to_string(),
+                equal_to_printed: e.same,
+                degree: e.degree as u32,
+                open: e.knots.is_open(e.degree),
+                uniform: e.knots.is_uniform(),
+                basis_functions: BSplineBasis::try_new(e.knots, e.degree)?.len() as u32,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
     Ok(Table {
         id: id.into(),
         title: "Knot vectors of seed 001: printed vs constructed, and their properties".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("example".into(), example),
-                Column::new("printed".into(), printed),
-                Column::new("ours".into(), ours),
-                Column::new("equal_to_printed".into(), agrees),
-                Column::new("degree".into(), degree),
-                Column::new("open".into(), open),
-                Column::new("uniform".into(), uniform),
-                Column::new("basis_functions".into(), count),
-            ],
-        )?,
+        df: crate::report::record::frame_of(id, &rows)?,
         notes: vec![
             "equal_to_printed: the constructed knots equal the printed ones exactly (— where the example is given as data, not constructed).".into(),
             "The slides require only t₁ ≤ … ≤ t_m = a for the extra end knots; spacing 1/4 reproduces the printed Δ* (our reading: the rule is not stated).".into(),
@@ -312,7 +329,7 @@ pub fn cubic_spline_ends() -> Result<Table> {
             EndCondition::Periodic | EndCondition::Cyclic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
             EndCondition::Anticyclic => ((d1a + d1b).abs(), (d2a + d2b).abs()),
         };
-        name.push(end.label());
+        name.push(end.legend());
         interp.push(
             x.iter()
                 .zip(&y)

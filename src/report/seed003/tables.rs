@@ -52,6 +52,15 @@ pub fn de_casteljau_table() -> Result<Table> {
     })
 }
 
+crate::record! {
+    /// A row of the checks of seed 003's listings: what was run, the value, what it means.
+    struct Check {
+        check: &'static str => "check",
+        value: String => "value",
+        meaning: &'static str => "meaning",
+    }
+}
+
 /// Seed 003's listings checked: what each printed procedure computes, and where it departs
 /// from its intent.
 ///
@@ -112,63 +121,47 @@ pub fn seed003_checks() -> Result<Table> {
             .collect::<Vec<_>>()
             .join(", ")
     });
-    let rows: Vec<(&str, String, &str)> = vec![
-        (
-            "printed setbval (nb = 6, Horner b₂, b₁ = 1 − b₀ − b₂ − b₃) vs the closed forms",
-            format!("{setbval:.3e}"),
-            "max |difference|: the listing computes the uniform cubic B-spline blending",
-        ),
-        (
-            "uniform blending vs Cox–de Boor on integer knots",
-            format!("{cox:.3e}"),
-            "max |b_i(u) − N_{i,3}(3 + u)| on integer knots: the same functions",
-        ),
-        (
-            "Lagrange blending, Σ B_i(u) − 1 on [−1, 2]",
-            format!("{lagrange_unity:.3e}"),
-            "partition of unity with B₄'s denominator (3)(2)(1) = 6",
-        ),
-        (
-            "B₄(2) with the printed denominator (3)(2)(−1)",
-            format!("{}", printed_b4(2.0)),
-            "−1 instead of 1: a sign typo in the notes (printed twice)",
-        ),
-        (
-            "recursive castel vs Bernstein sum, 7 points",
-            format!("{casteljau:.3e}"),
-            "max |difference| over 101 parameters: \"Casteljau\" and \"Bezier\" of the comparison are one curve",
-        ),
-        (
-            "printed bspline polyline: distance from its last vertex to the last point",
-            format!("{end_gap:.3e}"),
-            "make_one samples u = j/nb, j < nb, so u = 1 of the last segment is never drawn",
-        ),
-        (
-            "OpenGL spline as printed, 7 points: control points of the last group",
-            last_group,
-            "glMap1f always reads 5 points; entries beyond the 3 fresh ones are stale from the previous group",
-        ),
+    let rows = [
+        Check {
+            check: "printed setbval (nb = 6, Horner b₂, b₁ = 1 − b₀ − b₂ − b₃) vs the closed forms",
+            value: format!("{setbval:.3e}"),
+            meaning: "max |difference|: the listing computes the uniform cubic B-spline blending",
+        },
+        Check {
+            check: "uniform blending vs Cox–de Boor on integer knots",
+            value: format!("{cox:.3e}"),
+            meaning: "max |b_i(u) − N_{i,3}(3 + u)| on integer knots: the same functions",
+        },
+        Check {
+            check: "Lagrange blending, Σ B_i(u) − 1 on [−1, 2]",
+            value: format!("{lagrange_unity:.3e}"),
+            meaning: "partition of unity with B₄'s denominator (3)(2)(1) = 6",
+        },
+        Check {
+            check: "B₄(2) with the printed denominator (3)(2)(−1)",
+            value: format!("{}", printed_b4(2.0)),
+            meaning: "−1 instead of 1: a sign typo in the notes (printed twice)",
+        },
+        Check {
+            check: "recursive castel vs Bernstein sum, 7 points",
+            value: format!("{casteljau:.3e}"),
+            meaning: "max |difference| over 101 parameters: \"Casteljau\" and \"Bezier\" of the comparison are one curve",
+        },
+        Check {
+            check: "printed bspline polyline: distance from its last vertex to the last point",
+            value: format!("{end_gap:.3e}"),
+            meaning: "make_one samples u = j/nb, j < nb, so u = 1 of the last segment is never drawn",
+        },
+        Check {
+            check: "OpenGL spline as printed, 7 points: control points of the last group",
+            value: last_group,
+            meaning: "glMap1f always reads 5 points; entries beyond the 3 fresh ones are stale from the previous group",
+        },
     ];
     Ok(Table {
         id: id.into(),
         title: "Seed 003's printed procedures, checked".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new(
-                    "check".into(),
-                    rows.iter().map(|r| r.0).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "value".into(),
-                    rows.iter().map(|r| r.1.clone()).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "meaning".into(),
-                    rows.iter().map(|r| r.2).collect::<Vec<_>>(),
-                ),
-            ],
-        )?,
+        df: crate::report::record::frame_of(id, &rows)?,
         notes: vec![
             "Every value is computed by running the procedure; the points are those of the four-way figure.".into(),
         ],

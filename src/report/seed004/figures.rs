@@ -10,6 +10,7 @@ use crate::interp::methods::{CubicEnd, Method};
 use crate::report::draw::{self, Plot2d};
 use crate::report::error::Result;
 use crate::report::figure::Figure;
+use crate::report::legend::Legend;
 use crate::report::plot2d::{xy, Figure2d, Panel, Series, Style, GREY, INK};
 use crate::report::seed004::letters::{letter_a, Letter};
 use crate::report::style::LINE_PALETTE as C;
@@ -291,7 +292,7 @@ pub fn shape_column(column: usize) -> Result<Figure> {
             (drawn != c.points).then(|| {
                 format!(
                     " (printed {} {}, drawn with {drawn})",
-                    c.method.label(),
+                    c.method.legend(),
                     c.points
                 )
             })
@@ -434,7 +435,7 @@ fn letter_panels(
     let a = Panel::new(
         format!(
             "Fig. {fig} a) {}: {counted} pts (paper {printed})",
-            method.label()
+            method.legend()
         ),
         "",
         "",
@@ -558,14 +559,14 @@ pub fn sicily_chosen() -> Result<Figure> {
         let curve = method.curve(&points, true)?;
         let drawn = method.prepared(&points, true);
         panels.push(draw::interpolation(
-            format!("{}: {count} points, over the coast", method.label()),
+            format!("{}: {count} points, over the coast", method.legend()),
             &reference,
             &drawn,
             false,
             &curve,
         )?);
         panels.push(
-            Panel::new(format!("{}: the curve alone", method.label()), "x", "y")
+            Panel::new(format!("{}: the curve alone", method.legend()), "x", "y")
                 .equal()
                 .with(Series::line("curve", xy(&curve.polyline(3000)?), C[0])),
         );

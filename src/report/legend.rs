@@ -1,0 +1,144 @@
+//! Legend text: the words figures and tables use for the mathematics' named choices (a
+//! method, an end condition, a node family…). The math core names its choices with enums and
+//! prints nothing; the words live here, once each, behind one trait.
+//!
+//! ```
+//! use splinelab::report::Legend;
+//! use splinelab::{CubicEnd, Method};
+//! assert_eq!(Method::Cubic { end: CubicEnd::Cyclic }.legend(), "Cubic cyclic");
+//! assert_eq!(Method::Cardinal { a: 0.83 }.legend(), "Cardinal (a = 0.83)");
+//! ```
+//!
+//! Until the next release each enum also keeps its old `label()` method (deprecated; with this
+//! feature only), which returns the same text.
+
+use crate::blending::functions::Blending;
+use crate::interp::choice::Start;
+use crate::interp::cubic::EndCondition;
+use crate::interp::methods::{CubicEnd, Method};
+use crate::interp::param::Parametrization;
+use crate::interp::polynomial::NodeFamily;
+use crate::study::hermite_error::PatchEvaluation;
+use crate::study::table_i::Verdict;
+use std::borrow::Cow;
+
+/// The text a figure's legend or a table's cell gives a named choice of the mathematics.
+pub trait Legend {
+    /// The text (`Cubic cyclic`, `chord length`, `Chebyshev`, …).
+    fn legend(&self) -> Cow<'static, str>;
+}
+
+/// Each enum's words (`text`), its [`Legend`], and its deprecated `label()`, from one match.
+macro_rules! legend {
+    ($ty:ty, $label_self:ty, |$v:ident| $text:expr) => {
+        impl $ty {
+            fn text($v: &Self) -> &'static str {
+                $text
+            }
+
+            /// Legend text; moved to the report layer.
+            #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
+            pub fn label(self: $label_self) -> &'static str {
+                Self::text(&self)
+            }
+        }
+
+        impl Legend for $ty {
+            fn legend(&self) -> Cow<'static, str> {
+                Cow::Borrowed(Self::text(self))
+            }
+        }
+    };
+}
+
+legend!(NodeFamily, Self, |f| match f {
+    NodeFamily::Equispaced => "equispaced",
+    NodeFamily::Chebyshev => "Chebyshev",
+});
+
+legend!(CubicEnd, Self, |e| match e {
+    CubicEnd::Relaxed => "relaxed",
+    CubicEnd::Cyclic => "cyclic",
+    CubicEnd::Anticyclic => "anticyclic",
+});
+
+legend!(Start, Self, |s| match s {
+    Start::ArcLength => "arc length",
+    Start::Turning => "turning",
+    Start::ShapeParameter => "shape parameter",
+    Start::Corners => "corners",
+    Start::Symmetric => "symmetric",
+    Start::Random => "random",
+    Start::Known => "given",
+    Start::Fit => "least-squares fit",
+    Start::Pruned => "pruned",
+});
+
+legend!(Parametrization, Self, |p| match p {
+    Parametrization::Uniform => "uniform",
+    Parametrization::ChordLength => "chord length",
+    Parametrization::Centripetal => "centripetal",
+});
+
+legend!(Blending, Self, |b| match b {
+    Blending::Lagrange => "Lagrange 4-point",
+    Blending::UniformBSpline => "uniform cubic B-spline",
+});
+
+legend!(PatchEvaluation, &Self, |e| match e {
+    PatchEvaluation::HermiteMatrix => "Hermite matrix form",
+    PatchEvaluation::DeCasteljau => "de Casteljau, correct net",
+    PatchEvaluation::ReportListing => "report's listing (Codice 7 as printed)",
+});
+
+legend!(Verdict, &Self, |v| match v {
+    Verdict::Agrees => "agrees",
+    Verdict::Fewer => "fewer",
+    Verdict::More => "more",
+    Verdict::NoneWithin => "none within 1 %",
+});
+
+impl<const N: usize> EndCondition<N> {
+    fn text(&self) -> &'static str {
+        match self {
+            EndCondition::Clamped { .. } => "clamped",
+            EndCondition::Natural => "natural (relaxed)",
+            EndCondition::Periodic => "periodic (cyclic)",
+            EndCondition::Cyclic => "cyclic (open ends)",
+            EndCondition::Anticyclic => "anticyclic",
+        }
+    }
+
+    /// Legend text; moved to the report layer.
+    #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
+    pub fn label(&self) -> &'static str {
+        self.text()
+    }
+}
+
+impl<const N: usize> Legend for EndCondition<N> {
+    fn legend(&self) -> Cow<'static, str> {
+        Cow::Borrowed(self.text())
+    }
+}
+
+impl Legend for Method {
+    /// `Angular`, `Cardinal (a = 0.83)`, `Cubic relaxed`, `B-spline order 4`, `Linear`.
+    fn legend(&self) -> Cow<'static, str> {
+        match *self {
+            Method::Angular => "Angular".into(),
+            Method::Cardinal { a } => format!("Cardinal (a = {a})").into(),
+            Method::Cubic { end } => format!("Cubic {}", end.legend()).into(),
+            Method::BSpline { order } => format!("B-spline order {order}").into(),
+            Method::Linear => "Linear".into(),
+        }
+    }
+}
+
+impl Method {
+    /// Legend text; moved to the report layer.
+    #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
+    pub fn label(&self) -> String {
+        self.legend().into_owned()
+    }
+}
