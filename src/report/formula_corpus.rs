@@ -263,6 +263,16 @@ fn functions_entry(
 /// The errors of the objects' constructors and of the traces (none for the corpus as
 /// shipped; a formula that failed its capture check would be one).
 pub fn corpus() -> Result<Vec<CorpusEntry>> {
+    let mut out = surfaces()?;
+    out.extend(curves()?);
+    out.extend(bases()?);
+    out.push(torus_patch()?);
+    Ok(out)
+}
+
+/// The surfaces: the torus, the sphere, a surface of every supported function, and a Hermite
+/// spline surface of the torus.
+fn surfaces() -> Result<Vec<CorpusEntry>> {
     use crate::surface;
     let mut out = Vec::new();
     let unit = [(0.2, 1.2), (0.3, 1.1)];
@@ -321,7 +331,13 @@ pub fn corpus() -> Result<Vec<CorpusEntry>> {
         (0.3, 0.6),
         [(0.25, 0.5), (0.5, 0.75)],
     )?);
-    // curves
+    Ok(out)
+}
+
+/// The curves: B-splines (in `t` and in the piece's local variable), a Bézier, NURBS circles,
+/// cubic, Hermite, cardinal, Angular and linear splines, and two exact shapes.
+fn curves() -> Result<Vec<CorpusEntry>> {
+    let mut out = Vec::new();
     let zigzag: Vec<Vector2<f64>> = (0..8)
         .map(|i| Vector2::new(i as f64, ((i * 7) % 5) as f64))
         .collect();
@@ -408,7 +424,12 @@ pub fn corpus() -> Result<Vec<CorpusEntry>> {
         0.5,
         false,
     )?);
-    // bases and a patch
+    Ok(out)
+}
+
+/// The bases: Hermite, Bernstein of two degrees, a B-spline basis on a span.
+fn bases() -> Result<Vec<CorpusEntry>> {
+    let mut out = Vec::new();
     let h = symbolic::hermite_basis_formulas()?;
     out.push(functions_entry("hermite-basis", "H", &h, (0.0, 1.0), |t| {
         crate::hermite_basis(t).to_vec()
@@ -440,6 +461,12 @@ pub fn corpus() -> Result<Vec<CorpusEntry>> {
                 .collect()
         },
     ));
+    Ok(out)
+}
+
+/// The Hermite patch of the torus as `H(s)ᵀ C H(t)`.
+fn torus_patch() -> Result<CorpusEntry> {
+    let torus = crate::Torus::new(2.0, 1.0);
     let patch = crate::HermitePatch::from_surface(&torus, &crate::Rect::unit());
     let pf = symbolic::patch_formulas(&patch)?;
     let formulas =
@@ -459,13 +486,12 @@ pub fn corpus() -> Result<Vec<CorpusEntry>> {
             (at, v.iter().copied().collect())
         })
         .collect();
-    out.push(CorpusEntry {
+    Ok(CorpusEntry {
         name: "hermite-patch-of-torus".into(),
         kind: "patch",
         vars: vec!["s".into(), "t".into()],
         region: region.to_vec(),
         formulas,
         samples,
-    });
-    Ok(out)
+    })
 }

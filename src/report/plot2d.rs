@@ -640,21 +640,12 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
     } else {
         panel
     };
-    let ((mut x0, mut x1), (mut y0, mut y1)) = extent(panel);
+    let (mut xs, mut ys) = extent(panel);
     if panel.equal_aspect {
-        // grow the shorter side so one data unit spans as many pixels in x as in y
-        let (w, h) = area.dim_in_pixel();
-        let pw = w.saturating_sub(Y_LABEL_AREA + 2 * MARGIN).max(1) as f64;
-        let ph = h.saturating_sub(X_LABEL_AREA + CAPTION + 2 * MARGIN).max(1) as f64;
-        // in half widths, so nothing overflows; the ranges are made drawable again after
-        let scale = ((0.5 * x1 - 0.5 * x0) / pw).max((0.5 * y1 - 0.5 * y0) / ph);
-        let (cx, cy) = (0.5 * x0 + 0.5 * x1, 0.5 * y0 + 0.5 * y1);
-        let grown = |c: f64, p: f64| axis_range(c - scale * p, c + scale * p, 0.0);
-        if let (Some(x), Some(y)) = (grown(cx, pw), grown(cy, ph)) {
-            ((x0, x1), (y0, y1)) = (x, y);
-        }
+        (xs, ys) = equal_aspect(area.dim_in_pixel(), xs, ys);
     }
-    let (bx, by) = (drawing_box((x0, x1)), drawing_box((y0, y1)));
+    let ((x0, x1), (y0, y1)) = (xs, ys);
+    let (bx, by) = (drawing_box(xs), drawing_box(ys));
     let mut chart = ChartBuilder::on(area)
         .caption(&panel.title, (FONT, LABEL_SIZE + 2))
         .margin(MARGIN)
@@ -676,76 +667,7 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .draw()?;
     let mut labelled = false;
     for s in &panel.series {
-        let color = s.color;
-        let width = s.width.min(MAX_MARK);
-        let stroke = color.stroke_width(width);
-        // what lies in (or near) the plotting area only, so pixel coordinates stay small
-        let lines = || clip_polyline(&s.points, bx, by);
-        let marks = || {
-            s.points
-                .iter()
-                .copied()
-                .filter(|&p| inside(p, bx, by))
-                .collect::<Vec<_>>()
-        };
-        let mut line = |dashed: bool| -> Drawn<DB> {
-            for part in lines() {
-                if dashed {
-                    chart.draw_series(DashedLineSeries::new(part, 9, 6, stroke))?;
-                } else {
-                    chart.draw_series(LineSeries::new(part, stroke))?;
-                }
-            }
-            Ok(())
-        };
-        match s.style {
-            Style::Line => line(false)?,
-            Style::Dashed => line(true)?,
-            Style::LinePoints(_) => line(false)?,
-            _ => {}
-        }
-        // the legend entry hangs on the markers' series (empty for plain lines)
-        let anno = match s.style {
-            Style::Points(r) | Style::LinePoints(r) => {
-                let r = r.min(MAX_MARK);
-                chart.draw_series(
-                    marks()
-                        .into_iter()
-                        .map(|p| Circle::new(p, r, color.filled())),
-                )?
-            }
-            Style::Crosses(r) => {
-                let r = r.min(MAX_MARK) as i32;
-                chart.draw_series(
-                    marks()
-                        .into_iter()
-                        .map(|p| Cross::new(p, r, color.stroke_width(2))),
-                )?
-            }
-            Style::Line | Style::Dashed => {
-                chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
-            }
-        };
-        if let Some(label) = &s.label {
-            labelled = true;
-            let anno = anno.label(label.as_str());
-            match s.style {
-                Style::Points(r) => {
-                    let r = r.clamp(3, MAX_MARK);
-                    anno.legend(move |(x, y)| Circle::new((x + 10, y), r, color.filled()));
-                }
-                Style::Crosses(r) => {
-                    let r = r.clamp(3, MAX_MARK) as i32;
-                    anno.legend(move |(x, y)| Cross::new((x + 10, y), r, color.stroke_width(2)));
-                }
-                _ => {
-                    let width = width.max(2);
-                    anno.legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width))
-                    });
-                }
-            }
-        }
+        labelled |= draw_series(&mut chart, s, bx, by)?;
     }
     let note_font = (FONT, TICK_SIZE + 1).into_font().color(&BLACK);
     for (x, y, text) in panel
@@ -769,6 +691,106 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
             .draw()?;
     }
     Ok(())
+}
+
+/// The ranges grown on their shorter side so that one data unit spans as many pixels in `x`
+/// as in `y` on an area of `(w, h)` pixels (the given ranges if the grown ones cannot be
+/// drawn).
+fn equal_aspect(
+    (w, h): (u32, u32),
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> ((f64, f64), (f64, f64)) {
+    let pw = w.saturating_sub(Y_LABEL_AREA + 2 * MARGIN).max(1) as f64;
+    let ph = h.saturating_sub(X_LABEL_AREA + CAPTION + 2 * MARGIN).max(1) as f64;
+    // in half widths, so nothing overflows; the ranges are made drawable again after
+    let scale = ((0.5 * x1 - 0.5 * x0) / pw).max((0.5 * y1 - 0.5 * y0) / ph);
+    let (cx, cy) = (0.5 * x0 + 0.5 * x1, 0.5 * y0 + 0.5 * y1);
+    let grown = |c: f64, p: f64| axis_range(c - scale * p, c + scale * p, 0.0);
+    match (grown(cx, pw), grown(cy, ph)) {
+        (Some(x), Some(y)) => (x, y),
+        _ => ((x0, x1), (y0, y1)),
+    }
+}
+
+/// A panel's chart.
+type Chart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// One series on the chart — its line (clipped to the drawing box `bx × by`), its markers and
+/// its legend entry; whether it has one.
+fn draw_series<DB: DrawingBackend>(
+    chart: &mut Chart<'_, DB>,
+    s: &Series,
+    bx: (f64, f64),
+    by: (f64, f64),
+) -> Result<bool, DrawingAreaErrorKind<DB::ErrorType>> {
+    let color = s.color;
+    let width = s.width.min(MAX_MARK);
+    let stroke = color.stroke_width(width);
+    // what lies in (or near) the plotting area only, so pixel coordinates stay small
+    let marks = || {
+        s.points
+            .iter()
+            .copied()
+            .filter(|&p| inside(p, bx, by))
+            .collect::<Vec<_>>()
+    };
+    if matches!(s.style, Style::Line | Style::Dashed | Style::LinePoints(_)) {
+        for part in clip_polyline(&s.points, bx, by) {
+            if s.style == Style::Dashed {
+                chart.draw_series(DashedLineSeries::new(part, 9, 6, stroke))?;
+            } else {
+                chart.draw_series(LineSeries::new(part, stroke))?;
+            }
+        }
+    }
+    // the legend entry hangs on the markers' series (empty for plain lines)
+    let anno = match s.style {
+        Style::Points(r) | Style::LinePoints(r) => {
+            let r = r.min(MAX_MARK);
+            chart.draw_series(
+                marks()
+                    .into_iter()
+                    .map(|p| Circle::new(p, r, color.filled())),
+            )?
+        }
+        Style::Crosses(r) => {
+            let r = r.min(MAX_MARK) as i32;
+            chart.draw_series(
+                marks()
+                    .into_iter()
+                    .map(|p| Cross::new(p, r, color.stroke_width(2))),
+            )?
+        }
+        Style::Line | Style::Dashed => {
+            chart.draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
+        }
+    };
+    let Some(label) = &s.label else {
+        return Ok(false);
+    };
+    let anno = anno.label(label.as_str());
+    match s.style {
+        Style::Points(r) => {
+            let r = r.clamp(3, MAX_MARK);
+            anno.legend(move |(x, y)| Circle::new((x + 10, y), r, color.filled()));
+        }
+        Style::Crosses(r) => {
+            let r = r.clamp(3, MAX_MARK) as i32;
+            anno.legend(move |(x, y)| Cross::new((x + 10, y), r, color.stroke_width(2)));
+        }
+        _ => {
+            let width = width.max(2);
+            anno.legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(width))
+            });
+        }
+    }
+    Ok(true)
 }
 
 #[cfg(test)]

@@ -1,10 +1,8 @@
 //! The B-spline search (module docs of [`super`]): least-squares control polygons of every
 //! order for every vertex count from the fewest up.
 
-use super::{
-    better, bound, checked_known, Attempt, Choice, Minimality, Search, SearchOptions, Start,
-    Target, MAX_ORDER,
-};
+use super::count::{better, checked_known};
+use super::{bound, Attempt, Choice, Minimality, Search, SearchOptions, Start, Target, MAX_ORDER};
 use crate::bspline::fit::fit_bspline;
 use crate::error::{Error, Result};
 use crate::interp::methods::Method;

@@ -9,9 +9,9 @@ use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::legend::Legend;
 use crate::report::plot2d::Figure2d;
+use crate::report::record::frame_of;
 use crate::report::seed004::letters::letter_a;
-use crate::report::table::Column;
-use crate::report::table::{frame, Table};
+use crate::report::table::Table;
 use crate::seeds::seed004::{self as data, LETTER_FIGURES};
 use crate::shapes::TOLERANCE_FRACTION;
 use crate::study::table_i::{
@@ -119,6 +119,82 @@ pub fn table() -> Result<Table> {
     table_of(study()?)
 }
 
+crate::record! {
+    /// A row of Table I: one printed cell, the paper's rule, the automatic choice and its
+    /// evidence, the verdict.
+    struct CellRow {
+        column: String => "column",
+        shape: String => "shape",
+        method: String => "method",
+        printed_points: u32 => "printed_points",
+        printed_parameter: String => "printed_parameter",
+        printed_error_pct: f64 => "printed_error_pct",
+        printed_within: bool => "printed_within_1pct",
+        rule: String => "rule",
+        rule_points: Option<u32> => "rule_points",
+        rule_error_pct: Option<f64> => "rule_error_pct",
+        auto_points: u32 => "auto_points",
+        auto_parameter: String => "auto_parameter",
+        auto_error_pct: f64 => "auto_error_pct",
+        auto_within: bool => "auto_within_1pct",
+        auto_start: String => "auto_start",
+        minimality: String => "minimality",
+        one_fewer_points: Option<u32> => "one_fewer_points",
+        one_fewer_best_error_pct: Option<f64> => "one_fewer_best_error_pct",
+        one_fewer_starts: Option<u32> => "one_fewer_starts",
+        auto_curve_to_shape_pct: f64 => "auto_curve_to_shape_pct",
+        auto_shape_to_curve_pct: f64 => "auto_shape_to_curve_pct",
+        auto_inflections: u32 => "auto_inflections",
+        shape_inflections: Option<u32> => "shape_inflections",
+        auto_max_curvature_jump: f64 => "auto_max_curvature_jump",
+        verdict: String => "verdict",
+        why: String => "why",
+    }
+}
+
+impl CellRow {
+    fn of(c: &CellStudy) -> CellRow {
+        let s = c.size;
+        let m = &c.automatic.measure;
+        let below = c.below();
+        let (verdict, why) = c.verdict();
+        CellRow {
+            column: c.column.to_string(),
+            shape: c.shape.name().to_string(),
+            method: c.cell.method.family().to_string(),
+            printed_points: c.cell.points as u32,
+            printed_parameter: parameter(&c.cell.method),
+            printed_error_pct: pct(c.printed.measure.distances.hausdorff(), s),
+            printed_within: c.printed.measure.distances.hausdorff() <= c.tolerance,
+            rule: c.printed.rule.to_string(),
+            rule_points: c.paper_rule.as_ref().map(|r| r.measure.counted as u32),
+            rule_error_pct: c
+                .paper_rule
+                .as_ref()
+                .map(|r| pct(r.measure.distances.hausdorff(), s)),
+            auto_points: m.counted as u32,
+            auto_parameter: parameter(&c.automatic.method),
+            auto_error_pct: pct(m.distances.hausdorff(), s),
+            auto_within: c.automatic.within_tolerance,
+            auto_start: match c.automatic.start {
+                crate::interp::choice::Start::Known => "paper's rule".into(),
+                other => other.legend().into_owned(),
+            },
+            minimality: c.minimality.describe(s),
+            one_fewer_points: below.map(|b| b.counted as u32),
+            one_fewer_best_error_pct: below.and_then(|b| b.best_error).map(|e| pct(e, s)),
+            one_fewer_starts: below.map(|b| b.starts as u32),
+            auto_curve_to_shape_pct: pct(m.distances.curve_to_reference, s),
+            auto_shape_to_curve_pct: pct(m.distances.reference_to_curve, s),
+            auto_inflections: m.smoothness.inflections as u32,
+            shape_inflections: c.shape_inflections.map(|n| n as u32),
+            auto_max_curvature_jump: m.smoothness.max_jump,
+            verdict: verdict.legend().into_owned(),
+            why,
+        }
+    }
+}
+
 /// [`table`] of a study a caller holds ([`experiment::table_i`]'s cells) — in a notebook,
 /// where each cell links its own copy of the library and [`study`]'s cache does not outlive
 /// the cell, a variable keeps the study for the table, [`figure_of`], [`cross_of`] and
@@ -128,86 +204,8 @@ pub fn table() -> Result<Table> {
 /// a ragged frame (an internal error) ([`crate::report::Error::Table`]).
 pub fn table_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i";
-    let (mut column, mut shape, mut method) = (vec![], vec![], vec![]);
-    let (mut printed_param, mut rule, mut auto_param) = (vec![], vec![], vec![]);
-    let (mut printed_n, mut printed_err, mut printed_ok) = (vec![], vec![], vec![]);
-    let (mut rule_n, mut rule_err) = (vec![], vec![]);
-    let (mut auto_n, mut auto_err, mut auto_c2s, mut auto_s2c) = (vec![], vec![], vec![], vec![]);
-    let mut auto_ok = vec![];
-    let (mut infl, mut shape_infl, mut jump) = (vec![], vec![], vec![]);
-    let (mut verdicts, mut whys) = (vec![], vec![]);
-    let (mut start, mut below_n, mut below_err, mut below_starts, mut minimal) =
-        (vec![], vec![], vec![], vec![], vec![]);
-    for c in cells {
-        let s = c.size;
-        column.push(c.column.to_string());
-        shape.push(c.shape.name());
-        method.push(c.cell.method.family().to_string());
-        printed_param.push(parameter(&c.cell.method));
-        rule.push(c.printed.rule.to_string());
-        auto_param.push(parameter(&c.automatic.method));
-        printed_n.push(c.cell.points as u32);
-        printed_err.push(pct(c.printed.measure.distances.hausdorff(), s));
-        printed_ok.push(c.printed.measure.distances.hausdorff() <= c.tolerance);
-        rule_n.push(c.paper_rule.as_ref().map(|r| r.measure.counted as u32));
-        rule_err.push(
-            c.paper_rule
-                .as_ref()
-                .map(|r| pct(r.measure.distances.hausdorff(), s)),
-        );
-        let m = &c.automatic.measure;
-        auto_n.push(m.counted as u32);
-        auto_err.push(pct(m.distances.hausdorff(), s));
-        auto_ok.push(c.automatic.within_tolerance);
-        auto_c2s.push(pct(m.distances.curve_to_reference, s));
-        auto_s2c.push(pct(m.distances.reference_to_curve, s));
-        infl.push(m.smoothness.inflections as u32);
-        shape_infl.push(c.shape_inflections.map(|n| n as u32));
-        jump.push(m.smoothness.max_jump);
-        start.push(match c.automatic.start {
-            crate::interp::choice::Start::Known => "paper's rule".into(),
-            other => other.legend(),
-        });
-        let below = c.below();
-        below_n.push(below.map(|b| b.counted as u32));
-        below_err.push(below.and_then(|b| b.best_error).map(|e| pct(e, s)));
-        below_starts.push(below.map(|b| b.starts as u32));
-        minimal.push(c.minimality.describe(s));
-        let (v, why) = c.verdict();
-        verdicts.push(v.legend().to_string());
-        whys.push(why);
-    }
-    let df = frame(
-        id,
-        vec![
-            Column::new("column".into(), column),
-            Column::new("shape".into(), shape),
-            Column::new("method".into(), method),
-            Column::new("printed_points".into(), printed_n),
-            Column::new("printed_parameter".into(), printed_param),
-            Column::new("printed_error_pct".into(), printed_err),
-            Column::new("printed_within_1pct".into(), printed_ok),
-            Column::new("rule".into(), rule),
-            Column::new("rule_points".into(), rule_n),
-            Column::new("rule_error_pct".into(), rule_err),
-            Column::new("auto_points".into(), auto_n),
-            Column::new("auto_parameter".into(), auto_param),
-            Column::new("auto_error_pct".into(), auto_err),
-            Column::new("auto_within_1pct".into(), auto_ok),
-            Column::new("auto_start".into(), start),
-            Column::new("minimality".into(), minimal),
-            Column::new("one_fewer_points".into(), below_n),
-            Column::new("one_fewer_best_error_pct".into(), below_err),
-            Column::new("one_fewer_starts".into(), below_starts),
-            Column::new("auto_curve_to_shape_pct".into(), auto_c2s),
-            Column::new("auto_shape_to_curve_pct".into(), auto_s2c),
-            Column::new("auto_inflections".into(), infl),
-            Column::new("shape_inflections".into(), shape_infl),
-            Column::new("auto_max_curvature_jump".into(), jump),
-            Column::new("verdict".into(), verdicts),
-            Column::new("why".into(), whys),
-        ],
-    )?;
+    let rows: Vec<CellRow> = cells.iter().map(CellRow::of).collect();
+    let df = frame_of(id, &rows)?;
     let of = |verdict: Verdict| cells.iter().filter(move |c| c.verdict().0 == verdict);
     let fewer = of(Verdict::Fewer).count();
     let same = of(Verdict::Agrees).count();
@@ -292,6 +290,35 @@ pub fn cross() -> Result<Table> {
     cross_of(study()?)
 }
 
+crate::record! {
+    /// A row of the cross-method table: points chosen for one method drawn by another.
+    struct CrossRow {
+        column: &'static str => "column",
+        points_chosen_for: String => "points_chosen_for",
+        drawn_with: String => "drawn_with",
+        points: u32 => "points",
+        error_pct: Option<f64> => "error_pct",
+        own_points_error_pct: f64 => "own_points_error_pct",
+        absurd: bool => "absurd",
+        refused: String => "refused",
+    }
+}
+
+impl CrossRow {
+    fn of(r: &experiment::CrossStudy) -> CrossRow {
+        CrossRow {
+            column: r.column,
+            points_chosen_for: r.source.legend().into_owned(),
+            drawn_with: r.target.legend().into_owned(),
+            points: r.points as u32,
+            error_pct: r.error.as_ref().ok().map(|&e| pct(e, r.size)),
+            own_points_error_pct: pct(r.own_error, r.size),
+            absurd: r.absurd,
+            refused: r.error.as_ref().err().cloned().unwrap_or_default(),
+        }
+    }
+}
+
 /// [`cross`] of a study a caller holds (see [`table_of`]).
 ///
 /// # Errors
@@ -299,49 +326,8 @@ pub fn cross() -> Result<Table> {
 pub fn cross_of(cells: &[CellStudy]) -> Result<Table> {
     let id = "table-i-cross";
     let rows = cross_methods(cells)?;
-    let df = frame(
-        id,
-        vec![
-            Column::new(
-                "column".into(),
-                rows.iter().map(|r| r.column).collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "points_chosen_for".into(),
-                rows.iter().map(|r| r.source.legend()).collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "drawn_with".into(),
-                rows.iter().map(|r| r.target.legend()).collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "points".into(),
-                rows.iter().map(|r| r.points as u32).collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "error_pct".into(),
-                rows.iter()
-                    .map(|r| r.error.as_ref().ok().map(|&e| pct(e, r.size)))
-                    .collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "own_points_error_pct".into(),
-                rows.iter()
-                    .map(|r| pct(r.own_error, r.size))
-                    .collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "absurd".into(),
-                rows.iter().map(|r| r.absurd).collect::<Vec<_>>(),
-            ),
-            Column::new(
-                "refused".into(),
-                rows.iter()
-                    .map(|r| r.error.as_ref().err().cloned().unwrap_or_default())
-                    .collect::<Vec<_>>(),
-            ),
-        ],
-    )?;
+    let records: Vec<CrossRow> = rows.iter().map(CrossRow::of).collect();
+    let df = frame_of(id, &records)?;
     let absurd = rows.iter().filter(|r| r.absurd).count();
     let within = rows
         .iter()
@@ -461,6 +447,21 @@ pub fn letters_and_coast() -> Result<Table> {
     letters_and_coast_of(fewest_study()?)
 }
 
+crate::record! {
+    /// A row of the letters' and the coast's fewest points.
+    struct FewestRow {
+        figure: String => "figure",
+        method: String => "method",
+        printed_points: Option<u32> => "printed_points",
+        auto_points: u32 => "auto_points",
+        per_contour: String => "per_contour",
+        auto_parameter: String => "auto_parameter",
+        auto_error_pct: f64 => "auto_error_pct",
+        within: bool => "within_1pct",
+        decimated_error_pct: Option<f64> => "decimated_error_pct",
+    }
+}
+
 /// [`letters_and_coast`] of searches a caller holds ([`contour_searches`]; see [`table_of`]).
 ///
 /// # Errors
@@ -468,39 +469,39 @@ pub fn letters_and_coast() -> Result<Table> {
 pub fn letters_and_coast_of(rows: &[(Job, ContourStudy)]) -> Result<Table> {
     let id = "table-seed004-fewest";
     let coast = data::coastline();
-    let mut names = vec![];
-    let (mut methods, mut printed, mut ours, mut per, mut params) =
-        (vec![], vec![], vec![], vec![], vec![]);
-    let (mut errs, mut within, mut decimated) = (vec![], vec![], vec![]);
     let coast_size = contour_tolerance(std::slice::from_ref(&coast)) / TOLERANCE_FRACTION;
-    for (job, r) in rows {
-        let size = r.tolerance / TOLERANCE_FRACTION;
-        names.push(job.0.clone());
-        methods.push(format!("{:?}", job.2));
-        printed.push(job.3.map(|n| n as u32));
-        ours.push(r.counted() as u32);
-        per.push(
-            r.contours
-                .iter()
-                .map(|c| c.measure.counted.to_string())
-                .collect::<Vec<_>>()
-                .join(" + "),
-        );
-        params.push(
-            r.contours
-                .iter()
-                .map(|c| parameter(&c.method))
-                .collect::<Vec<_>>()
-                .join(", "),
-        );
-        errs.push(pct(r.error(), size));
-        within.push(r.within_tolerance());
-        decimated.push(if job.0.starts_with("Sicily") {
-            Some(pct(decimated_error(job.2, &coast)?, coast_size))
-        } else {
-            None
-        });
-    }
+    let records = rows
+        .iter()
+        .map(|(job, r)| {
+            let size = r.tolerance / TOLERANCE_FRACTION;
+            let decimated = if job.0.starts_with("Sicily") {
+                Some(pct(decimated_error(job.2, &coast)?, coast_size))
+            } else {
+                None
+            };
+            Ok(FewestRow {
+                figure: job.0.clone(),
+                method: format!("{:?}", job.2),
+                printed_points: job.3.map(|n| n as u32),
+                auto_points: r.counted() as u32,
+                per_contour: r
+                    .contours
+                    .iter()
+                    .map(|c| c.measure.counted.to_string())
+                    .collect::<Vec<_>>()
+                    .join(" + "),
+                auto_parameter: r
+                    .contours
+                    .iter()
+                    .map(|c| parameter(&c.method))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                auto_error_pct: pct(r.error(), size),
+                within: r.within_tolerance(),
+                decimated_error_pct: decimated,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
     let coast: Vec<(String, usize)> = rows
         .iter()
         .filter(|(j, _)| j.0.starts_with("Sicily"))
@@ -531,20 +532,7 @@ pub fn letters_and_coast_of(rows: &[(Job, ContourStudy)]) -> Result<Table> {
     } else {
         format!("{} of {} rows meet 1 % nowhere the search went (up to {} points per contour): {}; auto_points is then the configuration with the smallest error found, not a count that suffices. The search places points on the outline, and the Angular spline is G¹: it rounds every corner, and three points on one straight stroke beside a turn have no Angular piece (Error::NoSmoothPiece), so a letter's corners and strokes stay beyond 1 %.", unmet.len(), rows.len(), CONTOUR_MAX_POINTS, unmet.join(", "))
     };
-    let df = frame(
-        id,
-        vec![
-            Column::new("figure".into(), names),
-            Column::new("method".into(), methods),
-            Column::new("printed_points".into(), printed),
-            Column::new("auto_points".into(), ours),
-            Column::new("per_contour".into(), per),
-            Column::new("auto_parameter".into(), params),
-            Column::new("auto_error_pct".into(), errs),
-            Column::new("within_1pct".into(), within),
-            Column::new("decimated_error_pct".into(), decimated),
-        ],
-    )?;
+    let df = frame_of(id, &records)?;
     Ok(Table::new(
         id,
         "Seed 004: the fewest points per method for the letters \"a\" (Figs 9–20) and the Sicilian coast, within 1 % of each figure's size",
@@ -1114,7 +1102,7 @@ pub fn conclusions_of(cells: &[CellStudy], fewest: &[(Job, ContourStudy)]) -> Re
     Ok(Table::new(
         id,
         "Seed 004: the paper's conclusions beside the evidence of our runs",
-        crate::report::record::frame_of(id, &rows)?,
+        frame_of(id, &rows)?,
     )
     .note("Claims in the paper's words (spec §6). Evidence: the automatic counts of table-i (tolerance 1 %), the cross-method table table-i-cross (within 1 % / absurd beyond 5 %), a locality measurement (comparison::pieces_changed: 12 points of the ellipse 0.4, closed, the seventh moved by (0.02, 0.02)), and table-seed004-fewest. Verdicts: supported / contradicted / mixed by the thresholds in report::seed004::table_i::conclusions; the paper judged by eye and ease of use as well, which no number here measures.")
     .note("Locality: the cardinal spline with Clark's tangents has the same 4-point support as the Angular spline, and a B-spline of order k < n + 1 changes k pieces; only the cubic spline is global (spec A13)."))

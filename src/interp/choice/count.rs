@@ -1,0 +1,475 @@
+//! The count search: the fewest points with which a family draws a target (module docs of
+//! [`super`], **Count**) — an upper count (the known configuration's, or the first count where
+//! a start meets the tolerance), the counts below it searched in full (down one by one, or
+//! galloped and bisected), the minimality of the answer, and the counts of each family
+//! (distinct points, repeats of a closed curve, guides).
+
+use super::layout::{candidates, Candidate};
+use super::local::{compass, equidistribute, finish, tune_parameter};
+use super::prune::{pruned_starts, Seed};
+use super::{
+    bound, bspline, Attempt, Choice, Family, Minimality, Scratch, Search, SearchOptions, Start,
+    Target, MAX_EVALUATIONS, MAX_RANDOM_STARTS, POLISHED_STARTS,
+};
+use crate::error::{Error, Result};
+use crate::interp::methods::CubicEnd;
+
+/// The fewest points with which `family` draws `target` within its tolerance (module docs):
+/// [`search`]'s choice.
+///
+/// # Errors
+/// As [`search`].
+pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -> Result<Choice> {
+    search(target, family, options).map(|s| s.choice)
+}
+
+/// The fewest points with which `family` draws `target` within its tolerance, with the
+/// evidence (module docs). If no count up to [`SearchOptions::max_points`] does, the
+/// configuration with the lowest error found is returned with `within_tolerance == false`.
+///
+/// Every configuration tried counts at most [`SearchOptions::max_points`] points (as the
+/// paper counts them: repeats and guides included).
+///
+/// # Errors
+/// [`Error::TooLarge`] for a `max_points` beyond [`crate::error::MAX_ELEMENTS`] or
+/// `random_starts` beyond [`MAX_RANDOM_STARTS`];
+/// [`Error::TooFewPoints`] for a `max_points` below the family's fewest on this target;
+/// [`Error::Degenerate`] if no configuration tried is valid (an Angular spline on a polygon
+/// whose every placement has collinear triples, say); the errors of [`Target::measure`] on
+/// the returned configuration.
+pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Result<Search> {
+    let closed = target.is_closed();
+    check_options(family, closed, options)?;
+    if family == Family::BSpline {
+        return bspline::search(target, options);
+    }
+    let min = min_distinct(family, closed);
+    // the count is capped at a few points per reference segment (points may sit anywhere on
+    // a segment: a polygon's sides need them), which bounds the search's cost for any
+    // `max_points`
+    let max = distinct_of(family, closed, options.max_points).min(max_distinct_for(target));
+    let mut counts = Counts::new(target, family, options)?;
+    // 1. an upper count: the known one, or the first where a start meets the tolerance
+    let nearest = if counts.found.is_none() {
+        counts.rise(min, max)?
+    } else {
+        None
+    };
+    let top = counts.found.as_ref().map_or(max + 1, |f| f.0);
+    // 2. the counts below it, each with the full budget (and the starts pruned from the
+    // fewest points found so far)
+    if options.every_count_below {
+        counts.every_count_below(top, min)?;
+    } else {
+        counts.gallop_and_bisect(top, min)?;
+    }
+    // nothing valid anywhere: the count whose best start came nearest, in full
+    if counts.found.is_none() && counts.tried.iter().all(|a| a.2.is_none()) {
+        if let Some((_, n)) = nearest.filter(|&(_, n)| counts.tried.iter().all(|a| a.0 != n)) {
+            counts.full(n)?;
+        }
+    }
+    counts.answer(min)
+}
+
+/// The options' sizes, and a `max_points` at least the family's fewest.
+///
+/// # Errors
+/// As [`search`].
+fn check_options(family: Family, closed: bool, options: &SearchOptions) -> Result<()> {
+    crate::error::size("maximum point count", options.max_points)?;
+    if options.random_starts > MAX_RANDOM_STARTS {
+        return Err(Error::TooLarge {
+            what: "random starts per layout of the search",
+            got: options.random_starts,
+            max: MAX_RANDOM_STARTS,
+        });
+    }
+    let min = fewest_counted(family, closed);
+    if options.max_points < min {
+        return Err(Error::TooFewPoints {
+            what: "maximum point count of the search (the family's fewest on this target)",
+            needed: min,
+            got: options.max_points,
+        });
+    }
+    Ok(())
+}
+
+/// A count search under way (interpolating families): what it found, the configuration it
+/// prunes lower counts' starts from, every count searched in full, the evaluations made.
+struct Counts<'a> {
+    target: &'a Target,
+    family: Family,
+    options: &'a SearchOptions,
+    /// The fewest distinct points within the tolerance so far, and their configuration.
+    found: Option<(usize, Choice)>,
+    /// The configuration within the tolerance with the fewest points so far, in the search's
+    /// variables: the pruned starts of lower counts come from it.
+    seed: Option<Seed>,
+    /// Every count searched in full: distinct points, the attempt, its best configuration.
+    tried: Vec<(usize, Attempt, Option<Choice>)>,
+    evaluations: usize,
+}
+
+impl<'a> Counts<'a> {
+    /// A search that starts from the known configuration of `options`, if it holds.
+    fn new(target: &'a Target, family: Family, options: &'a SearchOptions) -> Result<Self> {
+        let known = checked_known(target, options)?;
+        let closed = target.is_closed();
+        Ok(Counts {
+            target,
+            family,
+            options,
+            seed: known
+                .as_ref()
+                .and_then(|k| Seed::of_choice(target, family, k)),
+            found: known.map(|k| (distinct_of(family, closed, k.measure.counted), k)),
+            tried: Vec::new(),
+            evaluations: 0,
+        })
+    }
+
+    /// Step 1 without a known configuration: the first count from `min` up to `max` where a
+    /// start meets the tolerance becomes `found`. Returns the count whose best start came
+    /// nearest (searched in full when no count has a valid configuration: an Angular spline
+    /// on a polygon, whose placements with many points have collinear triples).
+    fn rise(&mut self, min: usize, max: usize) -> Result<Option<(f64, usize)>> {
+        let mut nearest: Option<(f64, usize)> = None;
+        for n in min..=max {
+            let (best, e, evals) = first_look(self.target, self.family, n, self.options)?;
+            self.evaluations += evals;
+            if e.is_finite() && nearest.is_none_or(|(b, _)| e < b) {
+                nearest = Some((e, n));
+            }
+            if let Some((best, s)) = best {
+                self.found = Some((n, best));
+                self.seed = s;
+                break;
+            }
+        }
+        Ok(nearest)
+    }
+
+    /// The full search of `n` distinct points, recorded; its configuration if it meets the
+    /// tolerance (which then seeds the pruned starts of lower counts).
+    fn full(&mut self, n: usize) -> Result<Option<Choice>> {
+        let (target, family, options) = (self.target, self.family, self.options);
+        let (attempt, best, evals) = full_search(target, family, n, options, self.seed.as_ref())?;
+        self.evaluations += evals;
+        let success = best
+            .as_ref()
+            .filter(|c| c.0.within_tolerance)
+            .map(|c| c.0.clone());
+        if let Some((_, s)) = best.as_ref().filter(|c| c.0.within_tolerance) {
+            self.seed = s.clone().or(self.seed.take());
+        }
+        self.tried.push((n, attempt, best.map(|b| b.0)));
+        Ok(success)
+    }
+
+    /// Step 2 with [`SearchOptions::every_count_below`]: down from the upper count `top`
+    /// while the full search succeeds (each count pruned from the one above), then every
+    /// lower count from the method's minimum up.
+    fn every_count_below(&mut self, top: usize, min: usize) -> Result<()> {
+        let mut n = top;
+        while n > min {
+            match self.full(n - 1)? {
+                Some(c) => {
+                    n -= 1;
+                    self.found = Some((n, c));
+                }
+                None => break,
+            }
+        }
+        let failed = n.saturating_sub(1);
+        for m in min..failed {
+            if let Some(c) = self.full(m)? {
+                self.found = Some((m, c));
+                break;
+            }
+        }
+        Ok(())
+    }
+
+    /// Step 2 without it: gallop down from `top` while the full search succeeds, then bisect
+    /// between the lowest success and the highest failure (the count below the answer is so
+    /// searched in full).
+    fn gallop_and_bisect(&mut self, top: usize, min: usize) -> Result<()> {
+        let (mut ok, mut bad) = (top, min - 1);
+        let (mut step, mut galloping) = (1, true);
+        while ok - bad > 1 {
+            let n = if galloping {
+                ok.saturating_sub(step).max(bad + 1)
+            } else {
+                bad + (ok - bad) / 2
+            };
+            match self.full(n)? {
+                Some(c) => {
+                    ok = n;
+                    self.found = Some((n, c));
+                    step *= 2;
+                }
+                None => {
+                    bad = n;
+                    galloping = false;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The answer: the configuration found and how minimal its count is, or, with nothing
+    /// within the tolerance, the lowest error found.
+    ///
+    /// # Errors
+    /// [`Error::Degenerate`] if no configuration tried is valid.
+    fn answer(mut self, min: usize) -> Result<Search> {
+        self.tried.sort_by_key(|a| a.0);
+        let tried = &self.tried;
+        let every_below = |n: usize| (min..n).all(|m| tried.iter().any(|a| a.0 == m));
+        let (mut choice, minimality) = match self.found {
+            Some((n, c)) => {
+                let m = if n == min {
+                    Minimality::MethodMinimum
+                } else if let Some(b) = lower_bound(self.target, self.family, n - 1) {
+                    b
+                } else if every_below(n) {
+                    Minimality::Searched
+                } else {
+                    Minimality::Bisected
+                };
+                (c, m)
+            }
+            None => {
+                let best = tried
+                    .iter()
+                    .filter_map(|a| a.2.as_ref())
+                    .min_by(|a, b| {
+                        a.measure
+                            .distances
+                            .hausdorff()
+                            .total_cmp(&b.measure.distances.hausdorff())
+                    })
+                    .cloned()
+                    .ok_or(Error::Degenerate {
+                        what: "automatic point choice",
+                        reason: "no configuration of the method is valid on this target",
+                    })?;
+                (best, Minimality::NotMet)
+            }
+        };
+        choice.evaluations = self.evaluations;
+        Ok(Search {
+            choice,
+            attempts: self.tried.into_iter().map(|a| a.1).collect(),
+            minimality,
+        })
+    }
+}
+
+/// A lower bound that makes `n − 1 = below` distinct points of `family` fail (module docs,
+/// [`bound`]): a closed Angular spline through 3 points is their circumcircle.
+fn lower_bound(target: &Target, family: Family, below: usize) -> Option<Minimality> {
+    if !(family == Family::Angular && target.is_closed() && below == 3) {
+        return None;
+    }
+    let bound = bound::sampled_circle_bound(target.reference());
+    (bound > target.tolerance()).then_some(Minimality::LowerBound {
+        class: "a circle (a closed Angular spline through 3 points)",
+        bound,
+    })
+}
+
+/// A configuration with its seed for the pruned starts of lower counts.
+type Seeded = (Choice, Option<Seed>);
+
+/// The first look at `n` points (the rise to an upper count): the starts with the cardinal
+/// `a` tuned, the best measured densely if its coarse error is within the tolerance; the
+/// configuration (with its seed) if it meets the tolerance, the best coarse error, and the
+/// evaluations made.
+fn first_look(
+    target: &Target,
+    family: Family,
+    n: usize,
+    options: &SearchOptions,
+) -> Result<(Option<Seeded>, f64, usize)> {
+    let mut scratch = Scratch::default();
+    let mut evaluations = 0;
+    let mut best: Option<(f64, Candidate)> = None;
+    for (layout, x, start) in candidates(target, family, n, options.random_starts, options.seed) {
+        let (x, e, evals) = tune_parameter(target, &layout, x, &mut scratch);
+        evaluations += evals;
+        if best.as_ref().is_none_or(|b| e < b.0) {
+            best = Some((e, (layout, x, start)));
+        }
+    }
+    match best {
+        Some((e, (layout, x, start))) if e <= target.tolerance() => Ok((
+            finish(target, &layout, &x, start)?
+                .filter(|c| c.within_tolerance)
+                .map(|c| (c, Seed::of_layout(target, &layout, &x))),
+            e,
+            evaluations,
+        )),
+        Some((e, _)) => Ok((None, e, evaluations)),
+        None => Ok((None, f64::INFINITY, evaluations)),
+    }
+}
+
+/// The full search for `n` distinct points (steps 1–3 of the module docs), with the starts
+/// pruned `from` a configuration with more points: the attempt, the best configuration found
+/// (with its seed), and the evaluations made.
+fn full_search(
+    target: &Target,
+    family: Family,
+    n: usize,
+    options: &SearchOptions,
+    from: Option<&Seed>,
+) -> Result<(Attempt, Option<Seeded>, usize)> {
+    let mut scratch = Scratch::default();
+    let mut evaluations = 0;
+    let mut all = candidates(target, family, n, options.random_starts, options.seed);
+    if let Some(seed) = from {
+        let (pruned, evals) = pruned_starts(target, family, seed, n, &mut scratch);
+        evaluations += evals;
+        all.extend(pruned);
+    }
+    let starts = all.len();
+    let mut pool: Vec<(f64, Candidate)> = Vec::with_capacity(starts);
+    for (layout, x, start) in all {
+        let (x, e, evals) = tune_parameter(target, &layout, x, &mut scratch);
+        evaluations += evals;
+        let (x, e, evals) = equidistribute(target, &layout, x, e, &mut scratch);
+        evaluations += evals;
+        if e.is_finite() {
+            pool.push((e, (layout, x, start)));
+        }
+    }
+    // the best of each start family for each layout variant (cubic end condition) first, by
+    // error, then the rest by error; POLISHED_STARTS polished per variant
+    pool.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut order: Vec<usize> = Vec::new();
+    let mut seen: Vec<(CubicEnd, Start)> = Vec::new();
+    for (i, (_, (layout, _, start))) in pool.iter().enumerate() {
+        if !seen.contains(&(layout.end, *start)) {
+            seen.push((layout.end, *start));
+            order.push(i);
+        }
+    }
+    let rest: Vec<usize> = (0..pool.len()).filter(|i| !order.contains(i)).collect();
+    order.extend(rest);
+    let variants = CubicEnd::ALL
+        .iter()
+        .filter(|&&end| seen.iter().any(|s| s.0 == end))
+        .count();
+    let polished = POLISHED_STARTS.saturating_mul(variants.max(1));
+    let mut best: Option<Seeded> = None;
+    for &i in order.iter().take(polished) {
+        let (e, (layout, x, start)) = &pool[i];
+        let budget = options
+            .budget_per_coordinate
+            .saturating_mul(x.len())
+            .clamp(50, MAX_EVALUATIONS);
+        let (x, _, evals) = compass(target, layout, x.clone(), *e, budget, &mut scratch);
+        evaluations += evals;
+        if let Some(c) = finish(target, layout, &x, *start)? {
+            if better(&c, best.as_ref().map(|b| &b.0)) {
+                best = Some((c, Seed::of_layout(target, layout, &x)));
+            }
+        }
+        if best.as_ref().is_some_and(|b| b.0.within_tolerance) {
+            break;
+        }
+    }
+    let attempt = Attempt {
+        counted: counted_of(family, target.is_closed(), n),
+        best_error: best.as_ref().map(|b| b.0.measure.distances.hausdorff()),
+        starts,
+        within_tolerance: best.as_ref().is_some_and(|b| b.0.within_tolerance),
+    };
+    Ok((attempt, best, evaluations))
+}
+
+/// Within tolerance first, then the lower error.
+pub(super) fn better(c: &Choice, best: Option<&Choice>) -> bool {
+    match best {
+        None => true,
+        Some(b) => {
+            (c.within_tolerance, -c.measure.distances.hausdorff())
+                > (b.within_tolerance, -b.measure.distances.hausdorff())
+        }
+    }
+}
+
+/// The known configuration of `options`, measured again on `target` (its fields are public,
+/// so nothing it claims is trusted): `None` unless it builds, meets the tolerance and counts
+/// at least the family's fewest and at most `max_points`.
+///
+/// # Errors
+/// The errors of [`Target::measure`] for a known configuration that does not build (NaN
+/// points, say).
+pub(super) fn checked_known(target: &Target, options: &SearchOptions) -> Result<Option<Choice>> {
+    let Some(k) = &options.known else {
+        return Ok(None);
+    };
+    let measure = target.measure(&k.method, &k.points)?;
+    let within = measure.distances.hausdorff() <= target.tolerance();
+    let counted = measure.counted;
+    let min = Family::of(&k.method).map_or(0, |f| fewest_counted(f, target.is_closed()));
+    Ok(
+        (within && counted >= min && counted <= options.max_points).then(|| Choice {
+            method: k.method,
+            points: k.points.clone(),
+            within_tolerance: true,
+            measure,
+            evaluations: k.evaluations,
+            start: Start::Known,
+        }),
+    )
+}
+
+/// The most distinct points the search tries on `target`: four per reference vertex, at
+/// least 64.
+pub fn max_distinct_for(target: &Target) -> usize {
+    target.reference().len().saturating_mul(4).max(64)
+}
+
+/// The fewest distinct points of a family: 3 closed (Angular and cardinal: 3 + 3 repeats),
+/// 2 + 2 guides open for the guided families, 3 for the cubic.
+fn min_distinct(family: Family, closed: bool) -> usize {
+    match (family, closed) {
+        (_, true) => 3,
+        (Family::Angular | Family::Cardinal, false) => 4,
+        _ => 3,
+    }
+}
+
+/// Distinct points behind a counted number (the repeats of a closed curve taken off).
+pub(super) fn distinct_of(family: Family, closed: bool, counted: usize) -> usize {
+    counted.saturating_sub(repeats(family, closed))
+}
+
+/// The fewest points a family counts: the B-spline fit's fewest vertices (4 closed, the
+/// closing one counted once; 2 open), else [`min_distinct`] with the closed curve's repeats.
+pub(super) fn fewest_counted(family: Family, closed: bool) -> usize {
+    match (family, closed) {
+        (Family::BSpline, true) => 4,
+        (Family::BSpline, false) => 2,
+        _ => counted_of(family, closed, min_distinct(family, closed)),
+    }
+}
+
+/// The points counted for `distinct` distinct points (repeats of a closed curve added).
+pub(super) fn counted_of(family: Family, closed: bool, distinct: usize) -> usize {
+    distinct.saturating_add(repeats(family, closed))
+}
+
+/// The repeats a closed curve of the family counts: Angular and cardinal 3, others 1.
+fn repeats(family: Family, closed: bool) -> usize {
+    match (family, closed) {
+        (_, false) => 0,
+        (Family::Angular | Family::Cardinal, true) => 3,
+        (_, true) => 1,
+    }
+}
