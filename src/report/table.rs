@@ -305,33 +305,39 @@ pub fn tabulation<S: SurfaceDerivatives + Sync + ?Sized>(
         .note("Partials from one hyper-dual evaluation per point (num-dual HyperDual64): exact to rounding."))
 }
 
+crate::record! {
+    /// A row of an error-study table: one case and coordinate.
+    struct CoordErrorRow {
+        case: String => "case",
+        coord: &'static str => "coord",
+        report_norm: f64 => "report_norm",
+        max_abs: f64 => "max_abs",
+        rms: f64 => "rms",
+    }
+}
+
 /// Error studies side by side: one row per case and coordinate with the report's measure
 /// (mean of per-patch matrix 2-norms), max-abs and RMS.
 ///
 /// # Errors
 /// [`Error::Table`] only if the columns came out ragged (an internal error).
 pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> Result<Table> {
-    let (mut case, mut coord) = (vec![], vec![]);
-    let (mut norm, mut max_abs, mut rms) = (vec![], vec![], vec![]);
-    for (name, e) in cases {
-        for (k, axis) in COORDS.iter().enumerate() {
-            case.push(name.clone());
-            coord.push(*axis);
-            norm.push(e.report_norm[k]);
-            max_abs.push(e.max_abs[k]);
-            rms.push(e.rms[k]);
-        }
-    }
-    let df = frame(
-        id,
-        vec![
-            Column::new("case".into(), case),
-            Column::new("coord".into(), coord),
-            Column::new("report_norm".into(), norm),
-            Column::new("max_abs".into(), max_abs),
-            Column::new("rms".into(), rms),
-        ],
-    )?;
+    let rows: Vec<CoordErrorRow> = cases
+        .iter()
+        .flat_map(|(name, e)| {
+            COORDS
+                .iter()
+                .enumerate()
+                .map(move |(k, axis)| CoordErrorRow {
+                    case: name.clone(),
+                    coord: axis,
+                    report_norm: e.report_norm[k],
+                    max_abs: e.max_abs[k],
+                    rms: e.rms[k],
+                })
+        })
+        .collect();
+    let df = crate::report::record::frame_of(id, &rows)?;
     Ok(Table::new(id, title, df)
         .note("report_norm: the report's measure, the mean over patches of the matrix 2-norm of each patch's error samples (MATLAB norm); max_abs and rms over all samples."))
 }
@@ -398,20 +404,21 @@ pub fn seam_continuity(
     let local = crate::domain::Interval::try_new(0.0, 1.0)?.linspace(samples)?;
     let (n, m) = spline.patch_counts();
     let (u, v) = (spline.u().nodes(), spline.v().nodes());
-    let (mut dir, mut node, mut jump_x, mut jump_d, mut size_d) =
-        (vec![], vec![], vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     let mut seam = |name: &'static str, at: f64, pairs: Vec<(Partials2, Partials2)>| {
-        let (mut jx, mut jd, mut sd) = (0.0f64, 0.0f64, 0.0f64);
+        let mut row = SeamRow {
+            seam: name,
+            node: at,
+            jump_x: 0.0,
+            jump_derivative: 0.0,
+            derivative: 0.0,
+        };
         for (a, b) in pairs {
-            jx = jx.max((a.0 - b.0).amax());
-            jd = jd.max((a.1 - b.1).amax());
-            sd = sd.max(a.1.amax());
+            row.jump_x = row.jump_x.max((a.0 - b.0).amax());
+            row.jump_derivative = row.jump_derivative.max((a.1 - b.1).amax());
+            row.derivative = row.derivative.max(a.1.amax());
         }
-        dir.push(name);
-        node.push(at);
-        jump_x.push(jx);
-        jump_d.push(jd);
-        size_d.push(sd);
+        rows.push(row);
     };
     for i in 1..n {
         let (wl, wr) = (u[i] - u[i - 1], u[i + 1] - u[i]);
@@ -439,18 +446,20 @@ pub fn seam_continuity(
             .collect();
         seam("v", v[j], pairs);
     }
-    let df = frame(
-        "seams",
-        vec![
-            Column::new("seam".into(), dir),
-            Column::new("node".into(), node),
-            Column::new("max_jump_X".into(), jump_x),
-            Column::new("max_jump_cross_derivative".into(), jump_d),
-            Column::new("max_cross_derivative".into(), size_d),
-        ],
-    )?;
+    let df = crate::report::record::frame_of("seams", &rows)?;
     Ok(Table::new("seams", "Continuity across the seams of the spline surface", df)
         .note("Each side read from its own patch at its own edge; the cross derivative is X_u = X_s/Δu across a u-seam and X_v = X_t/Δv across a v-seam. Zero jumps (to rounding) are C¹ continuity."))
+}
+
+crate::record! {
+    /// A row of the seam table: one seam.
+    struct SeamRow {
+        seam: &'static str => "seam",
+        node: f64 => "node",
+        jump_x: f64 => "max_jump_X",
+        jump_derivative: f64 => "max_jump_cross_derivative",
+        derivative: f64 => "max_cross_derivative",
+    }
 }
 
 /// A point and the cross-seam derivative.

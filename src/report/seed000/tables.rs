@@ -5,8 +5,9 @@ use crate::bezier::patch::BezierPatch;
 use crate::domain::Rect;
 use crate::hermite::patch::HermitePatch;
 use crate::report::error::Result;
-use crate::report::table::{self, frame, Table, COORDS};
-use crate::report::table::{Column, Frame};
+use crate::report::record::frame_of;
+use crate::report::table::Frame;
+use crate::report::table::{self, Table, COORDS};
 use crate::seeds::seed000::{agrees_to_printed, PrintedRow, T3, T6};
 use crate::study::hermite_error::{
     convergence, uniform_spline_errors, PatchEvaluation, REPORT_PREC,
@@ -24,16 +25,31 @@ fn verdict(listing_agrees: bool, ours_agrees: bool) -> &'static str {
     }
 }
 
+crate::record! {
+    /// A row of an error table: one printed case and coordinate.
+    struct ErrorRow {
+        case: String => "case",
+        n: u32 => "n",
+        m: u32 => "m",
+        coord: &'static str => "coord",
+        printed: &'static str => "printed",
+        report_listing: f64 => "report_listing",
+        listing_agrees: bool => "listing_agrees",
+        ours: f64 => "ours",
+        ours_agrees: bool => "ours_agrees",
+        ours_de_casteljau: f64 => "ours_de_casteljau",
+        max_abs: f64 => "max_abs",
+        rms: f64 => "rms",
+        verdict: &'static str => "verdict",
+    }
+}
+
 /// Rows of an error table (T3 or T6): for every printed case and coordinate, the printed
 /// value, the report's listing run literally, our value by the Hermite matrix form and by
 /// de Casteljau on the correct net, max-abs and RMS.
 fn error_table(id: &'static str, printed: &[PrintedRow]) -> Result<Frame> {
     let torus = Torus::default();
-    let mut case = Vec::new();
-    let (mut ns, mut ms, mut coord, mut printed_col) = (vec![], vec![], vec![], vec![]);
-    let (mut listing, mut listing_ok, mut ours, mut ours_ok, mut ours_dc) =
-        (vec![], vec![], vec![], vec![], vec![]);
-    let (mut max_abs, mut rms, mut verdicts) = (vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     for row in printed {
         let rect = Rect::square(0.0, row.side)?;
         let run = |eval| uniform_spline_errors(&torus, &rect, row.n, row.m, REPORT_PREC, eval);
@@ -41,41 +57,26 @@ fn error_table(id: &'static str, printed: &[PrintedRow]) -> Result<Frame> {
         let mat = run(PatchEvaluation::HermiteMatrix)?;
         let dc = run(PatchEvaluation::DeCasteljau)?;
         for (k, axis) in COORDS.iter().enumerate() {
-            let l_ok = agrees_to_printed(row.values[k], lit.report_norm[k]);
-            let o_ok = agrees_to_printed(row.values[k], mat.report_norm[k]);
-            case.push(format!("[0,{}]², {}×{}", row.side, row.n, row.m));
-            ns.push(row.n as u32);
-            ms.push(row.m as u32);
-            coord.push(*axis);
-            printed_col.push(row.values[k]);
-            listing.push(lit.report_norm[k]);
-            listing_ok.push(l_ok);
-            ours.push(mat.report_norm[k]);
-            ours_ok.push(o_ok);
-            ours_dc.push(dc.report_norm[k]);
-            max_abs.push(mat.max_abs[k]);
-            rms.push(mat.rms[k]);
-            verdicts.push(verdict(l_ok, o_ok));
+            let listing_agrees = agrees_to_printed(row.values[k], lit.report_norm[k]);
+            let ours_agrees = agrees_to_printed(row.values[k], mat.report_norm[k]);
+            rows.push(ErrorRow {
+                case: format!("[0,{}]², {}×{}", row.side, row.n, row.m),
+                n: row.n as u32,
+                m: row.m as u32,
+                coord: axis,
+                printed: row.values[k],
+                report_listing: lit.report_norm[k],
+                listing_agrees,
+                ours: mat.report_norm[k],
+                ours_agrees,
+                ours_de_casteljau: dc.report_norm[k],
+                max_abs: mat.max_abs[k],
+                rms: mat.rms[k],
+                verdict: verdict(listing_agrees, ours_agrees),
+            });
         }
     }
-    frame(
-        id,
-        vec![
-            Column::new("case".into(), case),
-            Column::new("n".into(), ns),
-            Column::new("m".into(), ms),
-            Column::new("coord".into(), coord),
-            Column::new("printed".into(), printed_col),
-            Column::new("report_listing".into(), listing),
-            Column::new("listing_agrees".into(), listing_ok),
-            Column::new("ours".into(), ours),
-            Column::new("ours_agrees".into(), ours_ok),
-            Column::new("ours_de_casteljau".into(), ours_dc),
-            Column::new("max_abs".into(), max_abs),
-            Column::new("rms".into(), rms),
-            Column::new("verdict".into(), verdicts),
-        ],
-    )
+    frame_of(id, &rows)
 }
 
 fn error_notes() -> Vec<String> {
@@ -128,6 +129,16 @@ fn max_deviation(h: &HermitePatch, b: &BezierPatch) -> Result<f64> {
         .fold(0.0, f64::max))
 }
 
+crate::record! {
+    /// A row of the Hermite ≡ Bézier check: a rectangle and a net.
+    struct EquivalenceRow {
+        rectangle: &'static str => "rectangle",
+        bezier_net: &'static str => "bezier_net",
+        max_abs_deviation: f64 => "max_abs_deviation",
+        equivalent: bool => "equivalent_1e-13",
+    }
+}
+
 /// The Hermite ≡ Bézier check of Codice 10, on the report's rectangle and on rectangles where
 /// the torus's mixed partial is non-zero at every corner, for the correct net and for the
 /// net of Codice 7 as printed.
@@ -142,32 +153,26 @@ pub fn equivalence() -> Result<Table> {
         ("[0,1]×[0.5,1]", Rect::new(0.0, 1.0, 0.5, 1.0)),
         ("[0.3,1.4]×[0.5,1.7]", Rect::new(0.3, 1.4, 0.5, 1.7)),
     ];
-    let (mut rect_col, mut net_col, mut dev_col, mut ok_col) = (vec![], vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     for (label, rect) in rects {
         let h = HermitePatch::from_surface(&torus, &rect);
         for (net_label, net) in [
             ("correct M = A C Aᵀ", BezierPatch::from_hermite(&h)),
             ("Codice 7 as printed", report_codice7_net(&h)),
         ] {
-            let dev = max_deviation(&h, &net)?;
-            rect_col.push(label);
-            net_col.push(net_label);
-            dev_col.push(dev);
-            ok_col.push(dev < 1e-13);
+            let deviation = max_deviation(&h, &net)?;
+            rows.push(EquivalenceRow {
+                rectangle: label,
+                bezier_net: net_label,
+                max_abs_deviation: deviation,
+                equivalent: deviation < 1e-13,
+            });
         }
     }
     Ok(Table {
         id: id.into(),
         title: "Hermite ≡ Bézier (Codice 10) for the correct net and for Codice 7 as printed".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("rectangle".into(), rect_col),
-                Column::new("bezier_net".into(), net_col),
-                Column::new("max_abs_deviation".into(), dev_col),
-                Column::new("equivalent_1e-13".into(), ok_col),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "max_abs_deviation: largest |X_hermite − X_bezier| over a 101×101 grid of the patch, all coordinates; Bézier by de Casteljau.".into(),
             "The report's check (Codice 10) used [0,1]², where the torus's X_st vanishes at the corner (s_b, t_a) = (1, 0), so the wrong sign in Codice 7's M(3,2) cannot show; on rectangles with tₐ ≠ 0 it does.".into(),
@@ -210,6 +215,22 @@ pub fn convergence_table() -> Result<Table> {
     )))
 }
 
+crate::record! {
+    /// A row of the torus's partials: one point, partial and coordinate.
+    struct PartialRow {
+        s: f64 => "s",
+        t: f64 => "t",
+        partial: &'static str => "partial",
+        coord: &'static str => "coord",
+        formula: String => "formula",
+        hyper_dual: f64 => "hyper_dual",
+        closed_form: f64 => "closed_form",
+        abs_difference: f64 => "abs_difference",
+        formula_value: f64 => "formula_value",
+        formula_abs_difference: f64 => "formula_abs_difference",
+    }
+}
+
 /// The partials of the torus from hyper-dual numbers beside the closed forms MATLAB's `diff`
 /// returns in Codice 3, at a few points: what §2 computes symbolically, here exact to rounding.
 ///
@@ -226,9 +247,7 @@ pub fn torus_partials() -> Result<Table> {
     // the formulas, traced once through the same `eval` that gives the numbers
     let formulas = crate::symbolic::surface_formulas(&torus, 0.3, 0.7)?;
     let points = [(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0), (0.3, 2.1)];
-    let (mut s_col, mut t_col, mut what, mut coord) = (vec![], vec![], vec![], vec![]);
-    let (mut formula, mut dual, mut closed, mut diff) = (vec![], vec![], vec![], vec![]);
-    let (mut formula_value, mut formula_diff) = (vec![], vec![]);
+    let mut rows = Vec::new();
     for (s, t) in points {
         let d = torus.partials(s, t);
         let (ss, cs, st, ct) = (s.sin(), s.cos(), t.sin(), t.cos());
@@ -261,38 +280,26 @@ pub fn torus_partials() -> Result<Table> {
         ];
         for (name, ours, exact, traced) in closed_forms {
             for (k, axis) in COORDS.iter().enumerate() {
-                s_col.push(s);
-                t_col.push(t);
-                what.push(name);
-                coord.push(*axis);
-                formula.push(traced[k].plain());
-                dual.push(ours[k]);
-                closed.push(exact[k]);
-                diff.push((ours[k] - exact[k]).abs());
-                let v = traced[k].eval(&[s, t]);
-                formula_value.push(v);
-                formula_diff.push((v - ours[k]).abs());
+                let value = traced[k].eval(&[s, t]);
+                rows.push(PartialRow {
+                    s,
+                    t,
+                    partial: name,
+                    coord: axis,
+                    formula: traced[k].plain(),
+                    hyper_dual: ours[k],
+                    closed_form: exact[k],
+                    abs_difference: (ours[k] - exact[k]).abs(),
+                    formula_value: value,
+                    formula_abs_difference: (value - ours[k]).abs(),
+                });
             }
         }
     }
     Ok(Table {
         id: id.into(),
         title: "Exact partials of the torus: their formulas and hyper-dual values vs the closed forms of Codice 3".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("s".into(), s_col),
-                Column::new("t".into(), t_col),
-                Column::new("partial".into(), what),
-                Column::new("coord".into(), coord),
-                Column::new("formula".into(), formula),
-                Column::new("hyper_dual".into(), dual),
-                Column::new("closed_form".into(), closed),
-                Column::new("abs_difference".into(), diff),
-                Column::new("formula_value".into(), formula_value),
-                Column::new("formula_abs_difference".into(), formula_diff),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "hyper_dual: one evaluation of the torus formula at s + ε₁, t + ε₂ (num-dual HyperDual64); closed_form: the derivatives MATLAB's diff returns (Codice 3).".into(),
             "formula: the same generic eval run once on hyper-dual numbers of symbolic expressions (splinelab::symbolic), simplified and printed; formula_value: that formula evaluated at (s, t), checked against hyper_dual.".into(),

@@ -11,8 +11,8 @@ use crate::interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial, RU
 use crate::nurbs::NurbsCurve;
 use crate::report::error::Result;
 use crate::report::legend::Legend;
-use crate::report::table::Column;
-use crate::report::table::{frame, Table};
+use crate::report::record::frame_of;
+use crate::report::table::Table;
 use crate::seeds::seed000::agrees_to_printed;
 use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
@@ -118,13 +118,24 @@ pub fn knot_vectors() -> Result<Table> {
     Ok(Table {
         id: id.into(),
         title: "Knot vectors of seed 001: printed vs constructed, and their properties".into(),
-        df: crate::report::record::frame_of(id, &rows)?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "equal_to_printed: the constructed knots equal the printed ones exactly (— where the example is given as data, not constructed).".into(),
             "The slides require only t₁ ≤ … ≤ t_m = a for the extra end knots; spacing 1/4 reproduces the printed Δ* (our reading: the rule is not stated).".into(),
             "open: first and last knot of multiplicity n + 1 (seed 001 \"aperto\"); uniform: equally spaced distinct knots; basis_functions = knots − order = n + 1 + K.".into(),
         ],
     })
+}
+
+crate::record! {
+    /// A row of the partition-of-unity table: one basis function, or their sum.
+    struct UnityRow {
+        function: String => "function",
+        printed: String => "printed",
+        cox_de_boor: f64 => "cox_de_boor",
+        one_pass: f64 => "one_pass",
+        agrees: bool => "agrees",
+    }
 }
 
 /// Seed 001's partition-of-unity example: printed values vs Cox–de Boor vs the one-pass
@@ -139,34 +150,28 @@ pub fn partition_of_unity() -> Result<Table> {
         data::UNITY_DEGREE,
     )?;
     let fast = basis.all(data::UNITY_T);
-    let (mut name, mut printed, mut cox, mut one_pass, mut ok) =
-        (vec![], vec![], vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     for (i, text) in data::UNITY_PRINTED.iter().enumerate() {
         let c = basis.cox_de_boor(i, data::UNITY_DEGREE, data::UNITY_T);
-        name.push(format!("N{},2(0.6)", i + 1));
-        printed.push(text.to_string());
-        cox.push(c);
-        one_pass.push(fast[i]);
-        ok.push(agrees_to_printed(text, c) && agrees_to_printed(text, fast[i]));
+        rows.push(UnityRow {
+            function: format!("N{},2(0.6)", i + 1),
+            printed: text.to_string(),
+            cox_de_boor: c,
+            one_pass: fast[i],
+            agrees: agrees_to_printed(text, c) && agrees_to_printed(text, fast[i]),
+        });
     }
-    name.push("sum".into());
-    printed.push("1.0".into());
-    cox.push((0..4).map(|i| basis.cox_de_boor(i, 2, data::UNITY_T)).sum());
-    one_pass.push(fast.iter().sum());
-    ok.push(agrees_to_printed("1.0", fast.iter().sum()));
+    rows.push(UnityRow {
+        function: "sum".into(),
+        printed: "1.0".into(),
+        cox_de_boor: (0..4).map(|i| basis.cox_de_boor(i, 2, data::UNITY_T)).sum(),
+        one_pass: fast.iter().sum(),
+        agrees: agrees_to_printed("1.0", fast.iter().sum()),
+    });
     Ok(Table {
         id: id.into(),
         title: "Partition of unity: degree 2, knots (0,0,0,1,2,2,2), t = 0.6 (seed 001)".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("function".into(), name),
-                Column::new("printed".into(), printed),
-                Column::new("cox_de_boor".into(), cox),
-                Column::new("one_pass".into(), one_pass),
-                Column::new("agrees".into(), ok),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "cox_de_boor: the recurrence as printed (0/0 = 0); one_pass: all non-zero functions of the span at once (The NURBS Book A2.2). agrees: both round to the printed digits.".into(),
         ],
@@ -175,6 +180,18 @@ pub fn partition_of_unity() -> Result<Table> {
 
 /// Samples of the circle tables.
 pub const CIRCLE_SAMPLES: usize = 10_001;
+
+crate::record! {
+    /// A row of the NURBS circle table.
+    struct CircleRow {
+        circle: &'static str => "circle",
+        control_points: u32 => "control_points",
+        max_radius_error: f64 => "max_radius_error",
+        max_curvature_error: f64 => "max_curvature_error",
+        max_radius_error_unit_weights: f64 => "max_radius_error_unit_weights",
+        unit_weights_vs_bspline: f64 => "unit_weights_vs_bspline",
+    }
+}
 
 /// Seed 001's exact circles: radius error of the NURBS, and of the same control points with
 /// unit weights (a B-spline, not a circle).
@@ -185,9 +202,7 @@ pub fn nurbs_circle() -> Result<Table> {
     let id = "nurbs-circle";
     let center = Vector2::new(0.5, -0.25);
     let radius = 2.0;
-    let (mut name, mut points, mut nurbs_err, mut unit_err, mut equiv) =
-        (vec![], vec![], vec![], vec![], vec![]);
-    let mut curvature_err = vec![];
+    let mut rows = Vec::new();
     for (label, circle) in [
         ("7 control points", NurbsCurve::circle7(center, radius)?),
         ("9 control points", NurbsCurve::circle9(center, radius)?),
@@ -204,45 +219,46 @@ pub fn nurbs_circle() -> Result<Table> {
                 .map(|&t| ((c.point(t) - center).norm() - radius).abs())
                 .fold(0.0, f64::max)
         };
-        name.push(label);
-        points.push(circle.points().len() as u32);
-        nurbs_err.push(radius_error(&circle));
-        curvature_err.push(
-            ts.iter()
+        rows.push(CircleRow {
+            circle: label,
+            control_points: circle.points().len() as u32,
+            max_radius_error: radius_error(&circle),
+            max_curvature_error: ts
+                .iter()
                 .map(|&t| {
                     let [_, d1, d2] = circle.derivatives2(t);
                     (signed_curvature(&d1, &d2) * radius - 1.0).abs()
                 })
                 .fold(0.0, f64::max),
-        );
-        unit_err.push(radius_error(&unit));
-        equiv.push(
-            ts.iter()
+            max_radius_error_unit_weights: radius_error(&unit),
+            unit_weights_vs_bspline: ts
+                .iter()
                 .map(|&t| (unit.point(t) - bspline.point(t)).amax())
                 .fold(0.0, f64::max),
-        );
+        });
     }
     Ok(Table {
         id: id.into(),
         title: "The exact circle as a NURBS: radius error over 10 001 parameters (seed 001)"
             .into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("circle".into(), name),
-                Column::new("control_points".into(), points),
-                Column::new("max_radius_error".into(), nurbs_err),
-                Column::new("max_curvature_error".into(), curvature_err),
-                Column::new("max_radius_error_unit_weights".into(), unit_err),
-                Column::new("unit_weights_vs_bspline".into(), equiv),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "Circle of radius 2 centred at (0.5, −0.25); error = max over t of | ‖C(t) − c‖ − r |.".into(),
             "max_curvature_error: max |κ(t)·r − 1|, κ from the exact first and second derivatives (second-order dual numbers) — the parametrization is not by arc length, yet the curvature is 1/r everywhere.".into(),
             "unit_weights: the same control points with every weight 1 — a quadratic B-spline, visibly not a circle; unit_weights_vs_bspline: max |NURBS(w = 1) − B-spline|, the identity of the two.".into(),
         ],
     })
+}
+
+crate::record! {
+    /// A row of the Runge table: one degree.
+    struct RungeErrorRow {
+        degree: u32 => "degree",
+        equispaced: f64 => "max_error_equispaced",
+        chebyshev: f64 => "max_error_chebyshev",
+        vandermonde_condition: Option<f64> => "vandermonde_condition",
+        power_vs_lagrange: Option<f64> => "power_basis_vs_lagrange",
+    }
 }
 
 /// Seed 001's Runge phenomenon as a table: error vs degree for equispaced and Chebyshev
@@ -252,16 +268,15 @@ pub fn nurbs_circle() -> Result<Table> {
 /// Only on a ragged frame, an internal error ([`crate::report::Error::Table`]).
 pub fn runge_errors() -> Result<Table> {
     let id = "runge-errors";
-    let rows = data::runge_rows()?;
     let (a, b) = RUNGE_INTERVAL;
     let samples = linspace(a, b, data::RUNGE_SAMPLES);
-    let mut power_vs_lagrange = Vec::new();
-    for r in &rows {
+    let mut rows = Vec::new();
+    for r in data::runge_rows()? {
         let x = NodeFamily::Equispaced.nodes(a, b, r.degree)?;
         let y: Vec<f64> = x.iter().map(|&t| runge(t)).collect();
         let lagrange = Lagrange::try_new(&x, &y)?;
         // None where the Vandermonde solve no longer interpolates its data (IllConditioned)
-        power_vs_lagrange.push(match PowerPolynomial::interpolate(&x, &y) {
+        let power_vs_lagrange = match PowerPolynomial::interpolate(&x, &y) {
             Ok(power) => Some(
                 samples
                     .iter()
@@ -270,41 +285,37 @@ pub fn runge_errors() -> Result<Table> {
             ),
             Err(crate::Error::IllConditioned { .. } | crate::Error::SingularSystem { .. }) => None,
             Err(e) => return Err(e.into()),
+        };
+        rows.push(RungeErrorRow {
+            degree: r.degree as u32,
+            equispaced: r.equispaced,
+            chebyshev: r.chebyshev,
+            vandermonde_condition: r.vandermonde_condition,
+            power_vs_lagrange,
         });
     }
     Ok(Table {
         id: id.into(),
         title: "Runge's phenomenon: max |p − f| on [−5, 5] vs degree (seed 001)".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new(
-                    "degree".into(),
-                    rows.iter().map(|r| r.degree as u32).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "max_error_equispaced".into(),
-                    rows.iter().map(|r| r.equispaced).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "max_error_chebyshev".into(),
-                    rows.iter().map(|r| r.chebyshev).collect::<Vec<_>>(),
-                ),
-                Column::new(
-                    "vandermonde_condition".into(),
-                    rows.iter()
-                        .map(|r| r.vandermonde_condition)
-                        .collect::<Vec<_>>(),
-                ),
-                Column::new("power_basis_vs_lagrange".into(), power_vs_lagrange),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             format!("f(x) = 1/(1+x²); errors over {} equispaced samples of [−5, 5]; interpolants in Lagrange form.", data::RUNGE_SAMPLES),
             "Equispaced nodes: the error grows with the degree, largest near the ends (seed 001: \"l'errore aumenta all'estremità\"); Chebyshev nodes: it decreases.".into(),
             "vandermonde_condition: 2-norm condition number of V for the equispaced nodes (— where the smallest singular value is below rounding, σ_min ≤ ε σ_max: V is numerically singular, κ ≳ 4.5e15); power_basis_vs_lagrange: max difference between the Vandermonde-solved power form and the Lagrange form, the digits the power basis loses (— where the solved power form misses its own data by more than the residual tolerance, 1e-10 of the data scale, and is refused as ill-conditioned).".into(),
         ],
     })
+}
+
+crate::record! {
+    /// A row of the end-condition table: one end condition.
+    struct EndsRow {
+        end_condition: String => "end_condition",
+        interpolation: f64 => "max_interpolation_residual",
+        first_condition: f64 => "first_condition_residual",
+        second_condition: f64 => "second_condition_residual",
+        routes: f64 => "tridiagonal_vs_collocation",
+        error_vs_sin: f64 => "max_error_vs_sin",
+    }
 }
 
 /// The four end conditions on samples of `sin`: interpolation and end-condition residuals,
@@ -317,8 +328,7 @@ pub fn cubic_spline_ends() -> Result<Table> {
     let (x, y) = data::spline_ends_data();
     let yv: Vec<Vector1<f64>> = y.iter().map(|&v| Vector1::new(v)).collect();
     let fine = linspace(x[0], x[x.len() - 1], 1001);
-    let (mut name, mut interp, mut cond1, mut cond2, mut routes, mut err) =
-        (vec![], vec![], vec![], vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     for end in data::end_conditions() {
         let s = CubicSpline::function(&x, &y, end)?;
         let b = collocation::cubic_spline(&x, &yv, end)?;
@@ -329,41 +339,30 @@ pub fn cubic_spline_ends() -> Result<Table> {
             EndCondition::Periodic | EndCondition::Cyclic => ((d1a - d1b).abs(), (d2a - d2b).abs()),
             EndCondition::Anticyclic => ((d1a + d1b).abs(), (d2a + d2b).abs()),
         };
-        name.push(end.legend());
-        interp.push(
-            x.iter()
+        rows.push(EndsRow {
+            end_condition: end.legend().into_owned(),
+            interpolation: x
+                .iter()
                 .zip(&y)
                 .map(|(&t, &v)| (s.value(t) - v).abs())
                 .fold(0.0, f64::max),
-        );
-        cond1.push(r1);
-        cond2.push(r2);
-        routes.push(
-            fine.iter()
+            first_condition: r1,
+            second_condition: r2,
+            routes: fine
+                .iter()
                 .map(|&t| (s.value(t) - b.point(t).x).abs())
                 .fold(0.0, f64::max),
-        );
-        err.push(
-            fine.iter()
+            error_vs_sin: fine
+                .iter()
                 .map(|&t| (s.value(t) - t.sin()).abs())
                 .fold(0.0, f64::max),
-        );
+        });
     }
     Ok(Table {
         id: id.into(),
         title: "Cubic spline end conditions on 7 samples of sin x, [0, 2π] (seeds 001, 004)"
             .into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("end_condition".into(), name),
-                Column::new("max_interpolation_residual".into(), interp),
-                Column::new("first_condition_residual".into(), cond1),
-                Column::new("second_condition_residual".into(), cond2),
-                Column::new("tridiagonal_vs_collocation".into(), routes),
-                Column::new("max_error_vs_sin".into(), err),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "Conditions: clamped s′(x₀) = s′(x_n) = 1 (the true slopes); natural s″ = 0 at both ends; periodic s′, s″ equal at the ends; anticyclic s′(x₀) = −s′(x_n), s″(x₀) = −s″(x_n). Residuals from the exact derivatives (dual numbers) of each end piece.".into(),
             "tridiagonal_vs_collocation: max difference over 1001 points between the O(n) moment solve and the B-spline collocation system (knots at the data, two condition rows) — two independent formulations.".into(),

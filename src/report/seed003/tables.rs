@@ -9,10 +9,21 @@ use crate::bspline::basis::BSplineBasis;
 use crate::bspline::knots::KnotVector;
 use crate::domain::linspace;
 use crate::report::error::Result;
-use crate::report::table::Column;
-use crate::report::table::{frame, Table};
+use crate::report::record::frame_of;
+use crate::report::table::Table;
 use crate::seeds::seed003 as data;
 use nalgebra::Vector2;
+
+crate::record! {
+    /// A row of the de Casteljau table: one parameter.
+    struct CasteljauRow {
+        u: f64 => "u",
+        x: f64 => "x",
+        y: f64 => "y",
+        recursive_vs_iterative: f64 => "recursive_vs_iterative",
+        recursive_vs_bernstein: f64 => "recursive_vs_bernstein",
+    }
+}
 
 /// Seed 003's de Casteljau examples (`u = 0.3, 0.5, 0.7`): recursive as printed vs iterative
 /// vs Bernstein sum.
@@ -22,30 +33,23 @@ use nalgebra::Vector2;
 pub fn de_casteljau_table() -> Result<Table> {
     let id = "de-casteljau";
     let points = data::CASTELJAU_POINTS.map(|(x, y)| Vector2::new(x, y));
-    let (mut us, mut xs, mut ys, mut d_iter, mut d_bern) = (vec![], vec![], vec![], vec![], vec![]);
+    let mut rows = Vec::new();
     for &u in &data::CASTELJAU_U {
         let rec = de_casteljau_recursive(&points, u)?;
         let it = de_casteljau(&points, u)?;
         let bern = bernstein_sum(&points, u)?;
-        us.push(u);
-        xs.push(rec.x);
-        ys.push(rec.y);
-        d_iter.push((rec - it).amax());
-        d_bern.push((rec - bern).amax());
+        rows.push(CasteljauRow {
+            u,
+            x: rec.x,
+            y: rec.y,
+            recursive_vs_iterative: (rec - it).amax(),
+            recursive_vs_bernstein: (rec - bern).amax(),
+        });
     }
     Ok(Table {
         id: id.into(),
         title: "de Casteljau on 4 control points at u = 0.3, 0.5, 0.7 (seed 003)".into(),
-        df: frame(
-            id,
-            vec![
-                Column::new("u".into(), us),
-                Column::new("x".into(), xs),
-                Column::new("y".into(), ys),
-                Column::new("recursive_vs_iterative".into(), d_iter),
-                Column::new("recursive_vs_bernstein".into(), d_bern),
-            ],
-        )?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "x, y: the printed recursive castel; the iterative form (Codice 12 of seed 000) and the Bernstein sum give the same point to rounding.".into(),
         ],
@@ -161,7 +165,7 @@ pub fn seed003_checks() -> Result<Table> {
     Ok(Table {
         id: id.into(),
         title: "Seed 003's printed procedures, checked".into(),
-        df: crate::report::record::frame_of(id, &rows)?,
+        df: frame_of(id, &rows)?,
         notes: vec![
             "Every value is computed by running the procedure; the points are those of the four-way figure.".into(),
         ],
