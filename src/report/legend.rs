@@ -142,3 +142,40 @@ impl Method {
         self.legend().into_owned()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Legend;
+    use crate::interp::cubic::EndCondition;
+    use crate::interp::methods::{CubicEnd, Method};
+    use crate::interp::param::Parametrization;
+    use crate::study::hermite_error::PatchEvaluation;
+
+    /// The deprecated `label()` of one release gives the legend's text, and the texts of an
+    /// enum's variants differ (a legend that named two choices alike would mislead).
+    #[test]
+    #[allow(deprecated)]
+    fn old_labels_are_the_legends_and_variants_are_told_apart() {
+        let ends: Vec<String> = CubicEnd::ALL.iter().map(|e| e.legend().into()).collect();
+        assert_eq!(ends, ["relaxed", "cyclic", "anticyclic"]);
+        for e in CubicEnd::ALL {
+            assert_eq!(e.label(), e.legend());
+        }
+        let params: Vec<String> = Parametrization::ALL
+            .iter()
+            .map(|p| p.legend().into())
+            .collect();
+        assert_eq!(params.len(), 3);
+        assert!(params
+            .iter()
+            .all(|p| params.iter().filter(|q| *q == p).count() == 1));
+        for p in PatchEvaluation::ALL {
+            assert_eq!(p.label(), p.legend());
+        }
+        let m = Method::Cubic {
+            end: CubicEnd::Anticyclic,
+        };
+        assert_eq!(m.label(), "Cubic anticyclic");
+        assert_eq!(EndCondition::<2>::Natural.label(), "natural (relaxed)");
+    }
+}

@@ -70,3 +70,60 @@ macro_rules! record {
         }
     };
 }
+
+#[cfg(test)]
+mod tests {
+    use super::frame_of;
+    use crate::report::frame::Cell;
+
+    crate::record! {
+        /// A probe row.
+        #[derive(Clone)]
+        struct Probe {
+            name: &'static str => "name",
+            value: Option<f64> => "value",
+            count: usize => "count",
+        }
+    }
+
+    crate::record! {
+        /// Two fields naming one column.
+        struct Clash {
+            a: f64 => "x",
+            b: f64 => "x",
+        }
+    }
+
+    #[test]
+    fn fields_become_columns_in_order_with_their_kinds() {
+        let rows = [
+            Probe {
+                name: "a",
+                value: Some(0.5),
+                count: 3,
+            },
+            Probe {
+                name: "b",
+                value: None,
+                count: usize::MAX,
+            },
+        ];
+        let f = frame_of("probe", &rows).unwrap();
+        assert_eq!(f.names(), ["name", "value", "count"]);
+        assert_eq!(f.height(), 2);
+        let cell = |name: &str, i: usize| f.column(name).and_then(|c| c.get(i));
+        assert_eq!(cell("name", 1), Some(Cell::Text("b")));
+        assert_eq!(cell("value", 0), Some(Cell::Float(0.5)));
+        assert_eq!(cell("value", 1), Some(Cell::Null));
+        assert_eq!(cell("count", 1), Some(Cell::UInt(u64::MAX)));
+        // no rows: the columns, empty
+        let empty = frame_of::<Probe>("probe", &[]).unwrap();
+        assert_eq!((empty.width(), empty.height()), (3, 0));
+    }
+
+    #[test]
+    fn two_fields_with_one_column_name_are_a_typed_error() {
+        let err = frame_of("clash", &[Clash { a: 1.0, b: 2.0 }]).unwrap_err();
+        assert!(matches!(err, crate::report::Error::Table { ref name, .. } if name == "clash"));
+    }
+}
