@@ -1,5 +1,5 @@
-//! Automatic point choice (src/interp/choice.rs) and Table I regenerated
-//! (src/comparison.rs): the calibration, the guarantee against the paper's rule, an
+//! Automatic point choice (src/interp/choice/) and Table I regenerated
+//! (src/study/table_i.rs): the calibration, the guarantee against the paper's rule, an
 //! independent check of every accepted error, determinism, bad input.
 
 mod common;

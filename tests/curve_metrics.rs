@@ -1,4 +1,4 @@
-//! Curve error measures (src/curve_metrics.rs): the segment tree against brute force, the
+//! Curve error measures (src/metrics/curve.rs): the segment tree against brute force, the
 //! Hausdorff distances against closed forms, the curvature profile and smoothness against
 //! shapes whose curvature is known.
 

@@ -1,4 +1,4 @@
-//! choice: Target, fewest_points and the rest of src/interp/choice.rs
+//! choice: Target, fewest_points and the rest of src/interp/choice/
 
 use super::*;
 
