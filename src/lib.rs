@@ -27,6 +27,8 @@
 //!   ([`symbolic::surface_formulas`]; [`surface!`] writes one's own), curves on a piece,
 //!   the Hermite, Bernstein and B-spline bases, a patch as `H(s)ᵀ C H(t)`; plain text,
 //!   LaTeX and MathML.
+//! - [`Mesh`]: a surface's triangles on a rectangle with its exact normals (`X_s × X_t`) and
+//!   texture coordinates, for the report layer's OBJ, PLY and STL files (`report::export`).
 //! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
 //! - [`report`] (feature `report`, on by default): figures and tables of the user's own
 //!   objects ([`report::draw`], [`report::table`](mod@report::table)), the seeds' outputs built with them, output
@@ -73,6 +75,7 @@ mod horner;
 pub mod interp;
 mod lanes;
 mod memory;
+pub mod mesh;
 pub mod metrics;
 pub mod nurbs;
 mod parallel;
@@ -119,6 +122,7 @@ pub use interp::linear::PiecewiseLinear;
 pub use interp::methods::{CubicEnd, Interpolant, Method};
 pub use interp::param::Parametrization;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
+pub use mesh::Mesh;
 pub use metrics::surface::{compare, matlab_norm, CoordErrors};
 pub use nurbs::NurbsCurve;
 pub use shapes::Shape;

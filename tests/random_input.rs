@@ -86,9 +86,9 @@ use splinelab::{
     printed_setbval, report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4,
     uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
     CardinalSpline, CubicSpline, EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch,
-    HermiteSurface, Interval, KnotVector, Lagrange, NurbsCurve, ParametricCurve, Parametrization,
-    Partials, Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere,
-    SurfaceDerivatives, Torus,
+    HermiteSurface, Interval, KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve,
+    Parametrization, Partials, Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect,
+    Sphere, SurfaceDerivatives, Torus,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -1173,6 +1173,56 @@ proptest! {
                 check_interval("square s", &r.s, a, b)?;
                 check_interval("square t", &r.t, a, b)?;
             }
+            Ok(())
+        })?;
+    }
+
+    /// `Mesh::try_of_surface` (issue 29) on a torus and a sphere of any radii and a scaled
+    /// saddle, on any rectangle and grid: an `Ok` mesh has finite vertices on the surface,
+    /// unit normals, texture coordinates in [0, 1], 2(n − 1)(m − 1) triangles of valid
+    /// indices; a refusal is a typed error, never a panic.
+    #[test]
+    fn mesh_of_surface(
+        (a, b) in pair(),
+        (c, d) in pair(),
+        ns in count(0..=24),
+        nt in count(0..=24),
+        (r0, r1) in pair(),
+        which in 0usize..3,
+    ) {
+        guard(|| {
+            let Ok(rect) = Rect::try_new(a, b, c, d) else { return Ok(()) };
+            let saddle = FnSurface::new(move |s: HyperDual64, t: HyperDual64| {
+                Vector3::new(s, t, s * t * r0)
+            });
+            let surface: Box<dyn SurfaceDerivatives + Sync> = match which {
+                0 => match Torus::try_new(r0.abs(), r1.abs()) {
+                    Ok(t) => Box::new(t),
+                    Err(_) => return Ok(()),
+                },
+                1 => match Sphere::try_new(r0.abs()) {
+                    Ok(s) => Box::new(s),
+                    Err(_) => return Ok(()),
+                },
+                _ => Box::new(saddle),
+            };
+            let Ok(m) = Mesh::try_of_surface(surface.as_ref(), &rect, ns, nt) else {
+                return Ok(());
+            };
+            prop_assert_eq!(m.positions().len(), ns * nt);
+            prop_assert_eq!(m.triangles().len(), 2 * (ns - 1) * (nt - 1));
+            let scale = m.positions().iter().fold(0.0f64, |x, p| x.max(p.amax())).max(1.0);
+            for (k, p) in m.positions().iter().enumerate() {
+                let (i, j) = (k / nt, k % nt);
+                let (s, t) = (rect.s.linspace(ns).unwrap()[i], rect.t.linspace(nt).unwrap()[j]);
+                prop_assert!(p.iter().all(|x| x.is_finite()));
+                prop_assert!((p - surface.point(s, t)).amax() <= 1e-15 * scale, "vertex {} off the surface", k);
+                let n = m.normals()[k];
+                prop_assert!(n.iter().all(|x| x.is_finite()) && (n.norm() - 1.0).abs() < 1e-12, "normal {:?}", n);
+                let uv = m.uvs()[k];
+                prop_assert!(uv.iter().all(|x| (0.0..=1.0).contains(x)), "uv {:?}", uv);
+            }
+            prop_assert!(m.triangles().iter().flatten().all(|&q| (q as usize) < ns * nt));
             Ok(())
         })?;
     }

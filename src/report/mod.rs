@@ -10,6 +10,7 @@
 //!   `polars` feature, for any polars DataFrame through `Frame::try_from`).
 //! - [`frame`]: named columns of numbers, integers, flags or text, the data of a table;
 //!   [`record`]: a table from a slice of row structs ([`crate::record!`]).
+//! - [`export`]: meshes as OBJ, PLY and STL, written atomically.
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas, labelled values.
 //! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
@@ -22,6 +23,7 @@
 pub mod bench;
 pub mod draw;
 pub mod error;
+pub mod export;
 pub mod figure;
 mod files;
 pub mod formula_corpus;

@@ -406,6 +406,7 @@ mod fast_paths;
 mod grid;
 mod hermite;
 mod interp;
+mod mesh;
 mod metrics;
 mod more;
 mod nurbs;
@@ -431,6 +432,7 @@ fn all_cases() -> Vec<Case> {
     all.extend(nurbs::cases());
     all.extend(interp::cases());
     all.extend(metrics::cases());
+    all.extend(mesh::cases());
     all.extend(study::cases());
     all.extend(blending::cases());
     all.extend(report::cases());
