@@ -344,3 +344,197 @@ fn files_are_written_atomically_and_completely() {
     assert!(export::save(&bad, b"x").is_err());
     assert!(!bad.exists());
 }
+
+// ---------------------------------------------------------------------------------------------
+// curves as cubic Béziers and SVG paths
+// ---------------------------------------------------------------------------------------------
+
+mod curves {
+    use nalgebra::Vector2;
+    use splinelab::bezier::from_curve::{bezier_point, cubic_segments, CubicSegment};
+    use splinelab::report::export;
+    use splinelab::{
+        AngularSpline, BSplineCurve, CardinalSpline, CubicSpline, EndCondition, Error, NurbsCurve,
+        ParametricCurve, Parametrization, PiecewiseLinear,
+    };
+
+    fn points() -> Vec<Vector2<f64>> {
+        [
+            (0.0, 0.0),
+            (1.0, 2.0),
+            (3.0, 2.5),
+            (4.0, 0.5),
+            (6.0, 1.0),
+            (7.0, 3.0),
+        ]
+        .iter()
+        .map(|&(x, y)| Vector2::new(x, y))
+        .collect()
+    }
+
+    /// The largest distance between the segments and the curve over 64 parameters of each
+    /// segment, the segments' parameters found from the curve's pieces in order.
+    fn deviation<C: ParametricCurve<2>>(c: &C, segments: &[CubicSegment<2>]) -> f64 {
+        let (a, b) = c.domain();
+        let dense: Vec<Vector2<f64>> = (0..=20_000)
+            .map(|k| c.point(a + (b - a) * k as f64 / 20_000.0))
+            .collect();
+        // distances to the dense polyline's segments (its chords stray ≲ 1e-7 from the curve)
+        let tree = splinelab::metrics::curve::SegmentTree::new(&dense).unwrap();
+        let mut worst: f64 = 0.0;
+        for s in segments {
+            for k in 0..=64 {
+                worst = worst.max(tree.distance(bezier_point(s, k as f64 / 64.0)));
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn cubic_pieces_convert_exactly_one_segment_each() {
+        let p = points();
+        let cubic =
+            CubicSpline::curve(&p, Parametrization::ChordLength, EndCondition::Natural).unwrap();
+        let cardinal = CardinalSpline::try_new(p.clone(), 0.5).unwrap();
+        let bspline = BSplineCurve::with_order(p.clone(), 4).unwrap();
+        let linear = PiecewiseLinear::curve(&p, Parametrization::Uniform).unwrap();
+        let tol = 1e-9;
+        let check = |name: &str,
+                     c: &dyn Fn(f64) -> Vector2<f64>,
+                     pieces: Vec<(f64, f64)>,
+                     s: Vec<CubicSegment<2>>| {
+            assert_eq!(s.len(), pieces.len(), "{name}: one segment per piece");
+            for ((a, b), seg) in pieces.iter().zip(&s) {
+                for k in 0..=32 {
+                    let u = k as f64 / 32.0;
+                    let e = (bezier_point(seg, u) - c(a + u * (b - a))).norm();
+                    assert!(e < 1e-12, "{name}: {e:e} at u = {u}");
+                }
+            }
+        };
+        fn pieces<C: ParametricCurve<2>>(c: &C) -> Vec<(f64, f64)> {
+            let (mut a, end) = c.domain();
+            let mut out = Vec::new();
+            while a < end {
+                let b = c.span_at(a).map_or(end, |s| s.hi.min(end));
+                out.push((a, b));
+                a = b;
+            }
+            out
+        }
+        check(
+            "cubic",
+            &|t| cubic.point(t),
+            pieces(&cubic),
+            cubic_segments(&cubic, tol).unwrap(),
+        );
+        check(
+            "cardinal",
+            &|t| cardinal.point(t),
+            pieces(&cardinal),
+            cubic_segments(&cardinal, tol).unwrap(),
+        );
+        check(
+            "B-spline",
+            &|t| bspline.point(t),
+            pieces(&bspline),
+            cubic_segments(&bspline, tol).unwrap(),
+        );
+        check(
+            "linear",
+            &|t| linear.point(t),
+            pieces(&linear),
+            cubic_segments(&linear, tol).unwrap(),
+        );
+    }
+
+    #[test]
+    fn other_pieces_are_halved_to_the_tolerance() {
+        let circle = NurbsCurve::circle9(Vector2::new(1.0, -2.0), 3.0).unwrap();
+        let angular = AngularSpline::try_new(points()).unwrap();
+        for tol in [1e-3, 1e-6, 1e-9] {
+            let s = cubic_segments(&circle, tol).unwrap();
+            let e = deviation(&circle, &s);
+            assert!(e <= 2.0 * tol + 1e-7, "circle, tol {tol:e}: {e:e}");
+            for seg in &s {
+                for k in 0..=16 {
+                    let r = (bezier_point(seg, k as f64 / 16.0) - Vector2::new(1.0, -2.0)).norm();
+                    assert!(
+                        (r - 3.0).abs() <= 2.0 * tol,
+                        "circle radius off by {:e}",
+                        r - 3.0
+                    );
+                }
+            }
+            let s = cubic_segments(&angular, tol).unwrap();
+            let e = deviation(&angular, &s);
+            assert!(e <= 2.0 * tol + 1e-7, "Angular, tol {tol:e}: {e:e}");
+        }
+    }
+
+    #[test]
+    fn bad_tolerances_are_typed_errors() {
+        let c = CardinalSpline::try_new(points(), 0.5).unwrap();
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(matches!(
+                cubic_segments(&c, bad),
+                Err(Error::NotPositive { .. })
+            ));
+        }
+        // below the rounding of a circle's own points: refused after the halvings, no hang
+        let circle = NurbsCurve::circle9(Vector2::new(0.0, 0.0), 1e6).unwrap();
+        assert!(matches!(
+            cubic_segments(&circle, 1e-300),
+            Err(Error::NoConvergence { .. })
+        ));
+    }
+
+    /// SVG path data read back: `M`, `C` and `Z` as the SVG specification defines them
+    /// (absolute commands), the segments recovered exactly.
+    fn read_path(d: &str) -> Vec<CubicSegment<2>> {
+        let tokens: Vec<&str> = d.split_whitespace().collect();
+        let (mut k, mut at, mut out) = (0, Vector2::zeros(), Vec::new());
+        let num = |s: &str| s.parse::<f64>().unwrap();
+        while k < tokens.len() {
+            match tokens[k] {
+                "M" => {
+                    at = Vector2::new(num(tokens[k + 1]), num(tokens[k + 2]));
+                    k += 3;
+                }
+                "C" => {
+                    let p = |q: usize| {
+                        Vector2::new(num(tokens[k + 1 + 2 * q]), num(tokens[k + 2 + 2 * q]))
+                    };
+                    let seg = [at, p(0), p(1), p(2)];
+                    at = seg[3];
+                    out.push(seg);
+                    k += 7;
+                }
+                "Z" => k += 1,
+                other => panic!("unexpected path token {other}"),
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn svg_path_reads_back_exactly_and_closes_closed_curves() {
+        let closed = CardinalSpline::closed(&points(), 0.5).unwrap();
+        let s = cubic_segments(&closed, 1e-9).unwrap();
+        let d = export::svg_path(&s);
+        assert!(d.starts_with("M ") && d.ends_with(" Z"), "{d}");
+        assert_eq!(read_path(&d), s);
+        let open = CubicSpline::curve(
+            &points(),
+            Parametrization::Centripetal,
+            EndCondition::Natural,
+        )
+        .unwrap();
+        let s = cubic_segments(&open, 1e-9).unwrap();
+        let d = export::svg_path(&s);
+        assert!(!d.ends_with('Z'));
+        assert_eq!(read_path(&d), s);
+        let doc = export::svg_document(&s, 0.05);
+        assert!(doc.starts_with("<svg ") && doc.contains(&format!("d=\"{d}\"")));
+    }
+}

@@ -1,6 +1,7 @@
 //! Standard files out: a [`Mesh`] as Wavefront OBJ, PLY (ASCII or binary) and binary STL,
-//! for Blender, ParaView, MeshLab and slicers; written atomically like every other output
-//! ([`save`]).
+//! for Blender, ParaView, MeshLab and slicers; a curve as an SVG path of cubic Béziers
+//! ([`svg_path`], [`svg_document`]; exact for cubic pieces, [`crate::bezier::from_curve`]) for
+//! drawing programs; written atomically like every other output ([`save`]).
 //!
 //! ```
 //! use splinelab::report::export::{self, PlyEncoding};
@@ -22,6 +23,7 @@
 //! vertex normals (OBJ `vn`, PLY `nx ny nz`); an STL facet's normal is the normalised sum of
 //! its three vertex normals (the triangle's own normal where they cancel).
 
+use crate::bezier::from_curve::CubicSegment;
 use crate::mesh::Mesh;
 use crate::printed::decimal;
 use crate::report::error::Result;
@@ -162,6 +164,69 @@ pub fn stl(mesh: &Mesh) -> Result<Vec<u8>> {
 /// [`crate::report::Error::Io`] if the file cannot be written.
 pub fn save(path: &Path, bytes: &[u8]) -> Result<()> {
     crate::report::files::write_atomic(path, bytes)
+}
+
+/// The SVG path data of cubic Bézier segments: `M x y C x₁ y₁ x₂ y₂ x₃ y₃ …`, a new `M`
+/// where a segment does not start at the previous one's end, `Z` where the path returns to its
+/// start. Coordinates are the curve's own (SVG's `y` points down: [`svg_document`] flips it).
+pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
+    let mut d = String::new();
+    let mut at: Option<nalgebra::Vector2<f64>> = None;
+    let mut start = None;
+    for s in segments {
+        if at != Some(s[0]) {
+            let _ = write!(
+                d,
+                "{}M {}",
+                if d.is_empty() { "" } else { " " },
+                numbers(s[0].as_slice())
+            );
+            start = Some(s[0]);
+        }
+        let _ = write!(
+            d,
+            " C {} {} {}",
+            numbers(s[1].as_slice()),
+            numbers(s[2].as_slice()),
+            numbers(s[3].as_slice())
+        );
+        at = Some(s[3]);
+    }
+    if at.is_some() && at == start && segments.len() > 1 {
+        d.push_str(" Z");
+    }
+    d
+}
+
+/// A standalone SVG document drawing the path `d` ([`svg_path`]) with a stroke of
+/// `stroke_width` (in the curve's units), its `viewBox` the bounding box of `segments`' control
+/// points with a margin, and `y` pointing up as in the curve's coordinates.
+pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> String {
+    let points = segments.iter().flatten();
+    let (mut lo, mut hi) = (
+        nalgebra::Vector2::repeat(f64::INFINITY),
+        nalgebra::Vector2::repeat(f64::NEG_INFINITY),
+    );
+    for p in points {
+        lo = lo.inf(p);
+        hi = hi.sup(p);
+    }
+    if segments.is_empty() {
+        (lo, hi) = (nalgebra::Vector2::zeros(), nalgebra::Vector2::repeat(1.0));
+    }
+    let margin = 0.05 * (hi - lo).amax().max(f64::MIN_POSITIVE) + stroke_width;
+    let (x, y) = (lo.x - margin, lo.y - margin);
+    let (w, h) = (hi.x - lo.x + 2.0 * margin, hi.y - lo.y + 2.0 * margin);
+    format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\">\n<g transform=\"matrix(1 0 0 -1 0 {})\">\n<path d=\"{}\" fill=\"none\" stroke=\"black\" stroke-width=\"{}\"/>\n</g>\n</svg>\n",
+        decimal(x),
+        decimal(y),
+        decimal(w),
+        decimal(h),
+        decimal(2.0 * y + h),
+        svg_path(segments),
+        decimal(stroke_width)
+    )
 }
 
 /// Numbers separated by spaces, each the shortest decimal that reads back to it.
