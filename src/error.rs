@@ -392,6 +392,18 @@ pub enum Error {
         /// The limit, [`MAX_COORDINATE`].
         max: f64,
     },
+    /// A text input (a CSV file of points, an SVG path) could not be read: where and why.
+    #[error("{what}, line {line}, column {column}: {message}")]
+    Parse {
+        /// Which input.
+        what: &'static str,
+        /// The line (1-based).
+        line: usize,
+        /// The column (1-based, in characters; for a CSV field, the field's first character).
+        column: usize,
+        /// What is wrong there.
+        message: String,
+    },
 }
 
 impl std::fmt::Debug for Error {

@@ -81,6 +81,25 @@ pub(super) fn cases() -> Vec<Case> {
             let circle = ok(NurbsCurve::circle9(v2(0.0, 0.0), 1e6))?;
             expect_err!(cubic_segments(&circle, 5e-324), Error::NoConvergence { .. })
         }),
+        case("mesh::csv_points_refusals", || {
+            use splinelab::input::{points_from_csv, Columns};
+            for text in ["0,1\n2,inf\n", "0,1\n2\n", "a,b\n0,1\nc,d\n", "0,1e999\n"] {
+                expect_err!(
+                    points_from_csv::<2>(text, &Columns::First),
+                    Error::Parse { .. }
+                )?;
+            }
+            for text in ["", "x,y\n", "# nothing\n"] {
+                expect_err!(
+                    points_from_csv::<2>(text, &Columns::First),
+                    Error::TooFewPoints { .. }
+                )?;
+            }
+            expect_err!(
+                points_from_csv::<2>("0,1\n", &Columns::Indices(vec![usize::MAX, 0])),
+                Error::Parse { .. }
+            )
+        }),
     ];
     all.extend(report_cases());
     all
