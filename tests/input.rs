@@ -169,3 +169,120 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// SVG path data
+// ---------------------------------------------------------------------------------------------
+
+mod svg {
+    use nalgebra::Vector2;
+    use proptest::prelude::*;
+    use splinelab::input::{contours_from_svg_path, Contour};
+    use splinelab::Error;
+
+    fn pts(c: &Contour) -> Vec<(f64, f64)> {
+        c.points.iter().map(|p| (p.x, p.y)).collect()
+    }
+
+    #[test]
+    fn lines_absolute_relative_and_implicit_agree() {
+        let want = vec![(1.0, 1.0), (3.0, 1.0), (3.0, 3.0), (1.0, 1.0)];
+        for d in [
+            "M 1 1 L 3 1 L 3 3 Z",
+            "m1,1 l2,0 l0,2 z",
+            "M1 1 3 1 3 3z",
+            "M 1 1 H 3 V 3 Z",
+            "M1,1h2v2Z",
+        ] {
+            let c = contours_from_svg_path(d, 1e-3).unwrap();
+            assert_eq!(c.len(), 1, "{d}");
+            assert!(c[0].closed, "{d}");
+            assert_eq!(pts(&c[0]), want, "{d}");
+        }
+        let two = contours_from_svg_path("M0 0 L1 0 M 5 5 l 1 1", 1e-3).unwrap();
+        assert_eq!(two.len(), 2);
+        assert!(!two[0].closed && !two[1].closed);
+        assert_eq!(pts(&two[1]), [(5.0, 5.0), (6.0, 6.0)]);
+    }
+
+    #[test]
+    fn curves_flatten_onto_the_curve_within_the_tolerance() {
+        // the quadratic (0,0) (1,2) (2,0) is y = 2x − x²
+        for tol in [1e-2, 1e-5, 1e-8] {
+            let c = contours_from_svg_path("M 0 0 Q 1 2 2 0", tol).unwrap();
+            let p = &c[0].points;
+            assert!(p.len() >= 3);
+            for q in p {
+                assert!((q.y - (2.0 * q.x - q.x * q.x)).abs() < 1e-12, "{q:?}");
+            }
+            // the curve within tol of the polyline: its points between two vertices (B(t) =
+            // (2t, 4t − 4t²), t = x/2) near the chord joining them
+            for w in p.windows(2) {
+                let (t0, t1) = (w[0].x / 2.0, w[1].x / 2.0);
+                let chord = w[1] - w[0];
+                for k in 0..=8 {
+                    let t = t0 + (t1 - t0) * k as f64 / 8.0;
+                    let b = Vector2::new(2.0 * t, 4.0 * t - 4.0 * t * t);
+                    let u = ((b - w[0]).dot(&chord) / chord.norm_squared()).clamp(0.0, 1.0);
+                    let e = (b - (w[0] + chord * u)).norm();
+                    assert!(e <= tol * (1.0 + 1e-9) + 1e-12, "tol {tol:e}: {e:e}");
+                }
+            }
+        }
+        // a cubic and its relative form flatten alike
+        let a = contours_from_svg_path("M 1 1 C 1 2 2 2 2 1", 1e-4).unwrap();
+        let b = contours_from_svg_path("M 1 1 c 0 1 1 1 1 0", 1e-4).unwrap();
+        assert_eq!(a, b);
+        let last = a[0].points.last().unwrap();
+        assert_eq!(*last, Vector2::new(2.0, 1.0));
+    }
+
+    fn where_(d: &str) -> (usize, usize, String) {
+        match contours_from_svg_path(d, 1e-3) {
+            Err(Error::Parse {
+                line,
+                column,
+                message,
+                ..
+            }) => (line, column, message),
+            other => panic!("{d:?}: expected a parse error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn bad_paths_name_the_command_at_fault() {
+        assert_eq!(where_("L 1 1").1, 1);
+        assert_eq!(where_("M 0 0 L 1").1, 7);
+        assert_eq!(where_("M 0 0 A 1 1 0 0 1 2 2").1, 7);
+        assert_eq!(where_("M 0 0 S 1 1 2 2").1, 7);
+        assert_eq!(where_("M 0 0 X 1 1").1, 7);
+        assert_eq!(where_("M 0 0 L 1e999 0").1, 9);
+        assert_eq!(where_("M 0 0 L 1 # 2").1, 11);
+        assert_eq!(where_("M 0").1, 1);
+        assert_eq!(where_("M 0 0\nL 1").0, 2);
+        assert_eq!(where_("M 0 0 L 1.7e308 0").1, 7);
+        assert_eq!(where_("M 0 0 L 2e306 0 l 2e306 0").1, 17);
+        assert!(matches!(
+            contours_from_svg_path("M 0 0 L 1 1", 0.0),
+            Err(Error::NotPositive { .. })
+        ));
+        assert_eq!(contours_from_svg_path("", 1e-3).unwrap(), []);
+    }
+
+    proptest! {
+        /// Any path text: contours of finite points or a typed error placed inside the text.
+        #[test]
+        fn any_path_text_is_read_or_refused(d in "[MmLlHhVvCcQqZzAaSsXx0-9 ,.eE+\\-\\n]{0,120}") {
+            match contours_from_svg_path(&d, 1e-2) {
+                Ok(cs) => prop_assert!(cs.iter().all(|c| c.points.iter().all(|p| p.x.is_finite() && p.y.is_finite()))),
+                Err(Error::Parse { line, column, .. }) => {
+                    let lines: Vec<&str> = d.split('\n').collect();
+                    prop_assert!(line >= 1 && line <= lines.len());
+                    prop_assert!(column >= 1 && column <= lines[line - 1].chars().count() + 1);
+                }
+                Err(Error::TooLarge { .. }) => {}
+                Err(e) => prop_assert!(false, "unexpected {e}"),
+            }
+        }
+    }
+}

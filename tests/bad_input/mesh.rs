@@ -1,4 +1,5 @@
-//! mesh: Mesh::try_of_surface and the mesh files (issue 29)
+//! mesh and input: Mesh::try_of_surface, the mesh files, points from CSV and SVG paths
+//! (issue 29)
 
 use super::*;
 use splinelab::Mesh;
@@ -81,7 +82,7 @@ pub(super) fn cases() -> Vec<Case> {
             let circle = ok(NurbsCurve::circle9(v2(0.0, 0.0), 1e6))?;
             expect_err!(cubic_segments(&circle, 5e-324), Error::NoConvergence { .. })
         }),
-        case("mesh::csv_points_refusals", || {
+        case("input::csv_points_refusals", || {
             use splinelab::input::{points_from_csv, Columns};
             for text in ["0,1\n2,inf\n", "0,1\n2\n", "a,b\n0,1\nc,d\n", "0,1e999\n"] {
                 expect_err!(
@@ -99,6 +100,26 @@ pub(super) fn cases() -> Vec<Case> {
                 points_from_csv::<2>("0,1\n", &Columns::Indices(vec![usize::MAX, 0])),
                 Error::Parse { .. }
             )
+        }),
+        case("input::svg_path_refusals", || {
+            use splinelab::input::contours_from_svg_path;
+            for d in [
+                "M 0",
+                "L 1 1",
+                "M 0 0 A 1 1 0 0 1 2 2",
+                "M 0 0 X",
+                "M 0 0 L 1e999 0",
+                "M\u{0}",
+            ] {
+                expect_err!(contours_from_svg_path(d, 1e-3), Error::Parse { .. })?;
+            }
+            for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+                expect_err!(
+                    contours_from_svg_path("M 0 0 L 1 1", bad),
+                    Error::NotPositive { .. }
+                )?;
+            }
+            Ok(())
         }),
     ];
     all.extend(report_cases());

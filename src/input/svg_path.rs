@@ -1,0 +1,329 @@
+//! Points from SVG path data (the `d` attribute): an outline drawn in a drawing program, as
+//! dense polylines.
+//!
+//! - **Commands**: `M L H V C Q Z`, absolute (upper case) and relative (lower case); after a
+//!   move, further coordinate pairs are lines (the SVG rule); a command letter may be left out
+//!   when it repeats. Numbers follow SVG's grammar (`-1.5e-3`, `.5.5` is two numbers),
+//!   separated by blanks or commas.
+//! - **Flattening**: a line is its end point; a cubic (`C`) or quadratic (`Q`) Bézier is halved
+//!   (de Casteljau) until its control points lie within `tolerance` of the chord, so the
+//!   polyline is within `tolerance` of the curve; each flattened piece has at most
+//!   [`MAX_PIECES_PER_CURVE`] segments.
+//! - **Contours**: each `M` starts one; `Z` closes it (its first point repeated at its end).
+//! - **Refused** with [`Error::Parse`] (line and column of the command or number at fault): an
+//!   unknown or unsupported command (`S`, `T`, `A`: convert them to `C`, `Q` first), a command
+//!   without its numbers, a number that is not finite, data before the first `M`.
+
+use crate::error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
+use nalgebra::Vector2;
+
+/// The most segments one Bézier command flattens into (2¹⁶).
+pub const MAX_PIECES_PER_CURVE: usize = 1 << 16;
+
+/// A contour of a path: its points, and whether `Z` closed it (the first point is then
+/// repeated at the end).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contour {
+    /// The flattened points.
+    pub points: Vec<Vector2<f64>>,
+    /// Whether the contour was closed by `Z`.
+    pub closed: bool,
+}
+
+const WHAT: &str = "SVG path";
+
+/// The contours of SVG path data `d` flattened within `tolerance` (module docs).
+///
+/// ```
+/// use splinelab::input::svg_path::contours_from_svg_path;
+/// let c = contours_from_svg_path("M 0 0 L 10 0 q 5 5 0 10 Z", 0.01)?;
+/// assert_eq!(c.len(), 1);
+/// assert!(c[0].closed);
+/// let err = contours_from_svg_path("M 0 0 A 1 1 0 0 1 2 2", 0.01).unwrap_err();
+/// assert_eq!(err.to_string(), "SVG path, line 1, column 7: arcs (A) are not supported: convert them to C or Q first");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// As the module docs say; [`Error::NotPositive`] for a tolerance that is not positive and
+/// finite; [`Error::TooLarge`] beyond [`MAX_ELEMENTS`] points.
+pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
+    crate::error::positive("SVG path flattening tolerance", tolerance)?;
+    let tokens = tokenize(d)?;
+    let mut out: Vec<Contour> = Vec::new();
+    let mut pos = Vector2::zeros();
+    let mut start = Vector2::zeros();
+    let mut total = 0usize;
+    let mut k = 0;
+    let mut command: Option<(char, usize)> = None;
+    while k < tokens.len() {
+        let (c, at) = match tokens[k] {
+            Token::Command(c, at) => {
+                k += 1;
+                (c, at)
+            }
+            Token::Number(_, at) => match command {
+                // an implicit repeat; after a move, pairs are lines
+                Some(('M', _)) => ('L', at),
+                Some(('m', _)) => ('l', at),
+                Some((c, _)) if !matches!(c, 'Z' | 'z') => (c, at),
+                _ => {
+                    return Err(parse_error(
+                        d,
+                        at,
+                        "a number where a command was expected".into(),
+                    ))
+                }
+            },
+        };
+        command = Some((c, at));
+        let relative = c.is_ascii_lowercase();
+        let base = if relative { pos } else { Vector2::zeros() };
+        let mut take = |n: usize| -> Result<Vec<f64>> {
+            let mut v = Vec::with_capacity(n);
+            for _ in 0..n {
+                match tokens.get(k) {
+                    Some(&Token::Number(x, _)) => {
+                        v.push(x);
+                        k += 1;
+                    }
+                    _ => {
+                        return Err(parse_error(
+                            d,
+                            at,
+                            format!("{c} needs {n} numbers, found {}", v.len()),
+                        ))
+                    }
+                }
+            }
+            Ok(v)
+        };
+        if !matches!(c.to_ascii_uppercase(), 'M' | 'Z') && out.is_empty() {
+            return Err(parse_error(d, at, format!("{c} before the first M")));
+        }
+        let mut new_points: Vec<Vector2<f64>> = Vec::new();
+        match c.to_ascii_uppercase() {
+            'M' => {
+                let v = take(2)?;
+                pos = base + Vector2::new(v[0], v[1]);
+                start = pos;
+                out.push(Contour {
+                    points: vec![pos],
+                    closed: false,
+                });
+            }
+            'L' => {
+                let v = take(2)?;
+                pos = base + Vector2::new(v[0], v[1]);
+                new_points.push(pos);
+            }
+            'H' => {
+                let v = take(1)?;
+                pos.x = if relative { pos.x + v[0] } else { v[0] };
+                new_points.push(pos);
+            }
+            'V' => {
+                let v = take(1)?;
+                pos.y = if relative { pos.y + v[0] } else { v[0] };
+                new_points.push(pos);
+            }
+            'C' => {
+                let v = take(6)?;
+                let p = [
+                    pos,
+                    base + Vector2::new(v[0], v[1]),
+                    base + Vector2::new(v[2], v[3]),
+                    base + Vector2::new(v[4], v[5]),
+                ];
+                flatten(&p, tolerance, &mut new_points);
+                pos = p[3];
+            }
+            'Q' => {
+                let v = take(4)?;
+                let q = base + Vector2::new(v[0], v[1]);
+                let e = base + Vector2::new(v[2], v[3]);
+                // the quadratic as a cubic (degree elevation, exact)
+                let p = [
+                    pos,
+                    pos + (q - pos) * (2.0 / 3.0),
+                    e + (q - e) * (2.0 / 3.0),
+                    e,
+                ];
+                flatten(&p, tolerance, &mut new_points);
+                pos = e;
+            }
+            'Z' => {
+                if let Some(last) = out.last_mut() {
+                    if !last.closed {
+                        last.closed = true;
+                        if last.points.last() != Some(&start) {
+                            new_points.push(start);
+                        }
+                    }
+                }
+                pos = start;
+            }
+            'S' | 'T' => {
+                return Err(parse_error(
+                    d,
+                    at,
+                    format!("smooth curves ({c}) are not supported: write them as C or Q"),
+                ))
+            }
+            'A' => {
+                return Err(parse_error(
+                    d,
+                    at,
+                    format!("arcs ({c}) are not supported: convert them to C or Q first"),
+                ))
+            }
+            _ => return Err(parse_error(d, at, format!("unknown command {c:?}"))),
+        }
+        if let Some(bad) = new_points
+            .iter()
+            .chain(std::iter::once(&pos))
+            .find(|p| !p.iter().all(|x| x.abs() <= MAX_COORDINATE))
+        {
+            return Err(parse_error(
+                d,
+                at,
+                format!(
+                    "the point ({}, {}) is not finite or beyond the largest coordinate",
+                    bad.x, bad.y
+                ),
+            ));
+        }
+        total = total.saturating_add(new_points.len() + 1);
+        if total > MAX_ELEMENTS {
+            return Err(Error::TooLarge {
+                what: "SVG path points",
+                got: total,
+                max: MAX_ELEMENTS,
+            });
+        }
+        if let Some(last) = out.last_mut() {
+            if last.closed && !new_points.is_empty() && !c.eq_ignore_ascii_case(&'Z') {
+                // drawing on after Z starts a new contour at the start point (SVG)
+                out.push(Contour {
+                    points: vec![start],
+                    closed: false,
+                });
+            }
+        }
+        if let Some(last) = out.last_mut() {
+            last.points.extend(new_points);
+        }
+    }
+    Ok(out)
+}
+
+/// Appends the points of the cubic `p` (its start excluded) within `tolerance`.
+fn flatten(p: &[Vector2<f64>; 4], tolerance: f64, out: &mut Vec<Vector2<f64>>) {
+    let mut stack = vec![(*p, 0usize)];
+    // depth 16 gives at most MAX_PIECES_PER_CURVE pieces
+    while let Some((q, depth)) = stack.pop() {
+        if depth >= 16 || flat(&q, tolerance) {
+            out.push(q[3]);
+            continue;
+        }
+        let ab = (q[0] + q[1]) * 0.5;
+        let bc = (q[1] + q[2]) * 0.5;
+        let cd = (q[2] + q[3]) * 0.5;
+        let abc = (ab + bc) * 0.5;
+        let bcd = (bc + cd) * 0.5;
+        let m = (abc + bcd) * 0.5;
+        // the second half first on the stack, so the first half is emitted first
+        stack.push(([m, bcd, cd, q[3]], depth + 1));
+        stack.push(([q[0], ab, abc, m], depth + 1));
+    }
+}
+
+/// Whether both inner control points lie within `tolerance` of the chord (then the curve,
+/// inside their convex hull, does too).
+fn flat(q: &[Vector2<f64>; 4], tolerance: f64) -> bool {
+    let chord = q[3] - q[0];
+    let len = chord.norm();
+    let dist = |p: Vector2<f64>| {
+        if len == 0.0 {
+            (p - q[0]).norm()
+        } else {
+            let t = ((p - q[0]).dot(&chord) / (len * len)).clamp(0.0, 1.0);
+            (p - (q[0] + chord * t)).norm()
+        }
+    };
+    dist(q[1]) <= tolerance && dist(q[2]) <= tolerance
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Token {
+    /// A command letter and its byte offset.
+    Command(char, usize),
+    /// A number and its byte offset.
+    Number(f64, usize),
+}
+
+/// Splits path data into command letters and numbers (SVG's number grammar).
+fn tokenize(d: &str) -> Result<Vec<Token>> {
+    let bytes = d.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        let b = bytes[i];
+        if b.is_ascii_whitespace() || b == b',' {
+            i += 1;
+        } else if b.is_ascii_alphabetic() && b != b'e' && b != b'E' {
+            out.push(Token::Command(b as char, i));
+            i += 1;
+        } else if b.is_ascii_digit() || matches!(b, b'+' | b'-' | b'.') {
+            let start = i;
+            if matches!(b, b'+' | b'-') {
+                i += 1;
+            }
+            let mut dot = false;
+            while i < bytes.len() && (bytes[i].is_ascii_digit() || (bytes[i] == b'.' && !dot)) {
+                dot |= bytes[i] == b'.';
+                i += 1;
+            }
+            if i < bytes.len() && matches!(bytes[i], b'e' | b'E') {
+                let mut j = i + 1;
+                if j < bytes.len() && matches!(bytes[j], b'+' | b'-') {
+                    j += 1;
+                }
+                if j < bytes.len() && bytes[j].is_ascii_digit() {
+                    while j < bytes.len() && bytes[j].is_ascii_digit() {
+                        j += 1;
+                    }
+                    i = j;
+                }
+            }
+            let text = &d[start..i];
+            match text.parse::<f64>() {
+                Ok(x) if x.is_finite() => out.push(Token::Number(x, start)),
+                _ => {
+                    return Err(parse_error(
+                        d,
+                        start,
+                        format!("not a finite number: {text:?}"),
+                    ))
+                }
+            }
+        } else {
+            let ch = d[i..].chars().next().unwrap_or('?');
+            return Err(parse_error(d, i, format!("unexpected character {ch:?}")));
+        }
+    }
+    Ok(out)
+}
+
+/// A parse error at byte offset `at` of `d`, as line and column (1-based, in characters).
+fn parse_error(d: &str, at: usize, message: String) -> Error {
+    let before = &d[..at.min(d.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    Error::Parse {
+        what: WHAT,
+        line,
+        column,
+        message,
+    }
+}
