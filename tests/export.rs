@@ -538,3 +538,32 @@ mod curves {
         assert!(doc.starts_with("<svg ") && doc.contains(&format!("d=\"{d}\"")));
     }
 }
+
+/// A user's glyph (issue 29): any character of any font file, the shipped letter "a" the same
+/// as the seed-004 study's; a glyph the font lacks, a glyph without outline and bytes that are
+/// no font are typed errors naming the character.
+#[test]
+fn glyphs_of_a_font_file() {
+    use splinelab::report::seed004::letters::{glyph, letter_a};
+    let font = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/assets/fonts/DejaVuSans.ttf"
+    ))
+    .unwrap();
+    assert_eq!(glyph(&font, 'a').unwrap(), letter_a(1).unwrap().contours);
+    let b = glyph(&font, 'B').unwrap();
+    assert_eq!(b.len(), 3, "B: the outer contour and two counters");
+    for c in &b {
+        assert_eq!(c.outline.first(), c.outline.last());
+        assert!(c.points.iter().all(|p| p.x.is_finite() && p.y.is_finite()));
+    }
+    for (bytes, ch) in [
+        (&font[..], '\u{10FFFF}'),
+        (&font[..], ' '),
+        (&b"not a font"[..], 'a'),
+        (&[][..], 'a'),
+    ] {
+        let e = glyph(bytes, ch).unwrap_err().to_string();
+        assert!(e.contains(&format!("{ch:?}")), "{e}");
+    }
+}

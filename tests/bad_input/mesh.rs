@@ -144,6 +144,20 @@ fn report_cases() -> Vec<Case> {
                 splinelab::report::Error::Core(Error::Overflow { .. })
             )
         }),
+        case("input::glyph_refusals", || {
+            use splinelab::report::seed004::letters::glyph;
+            let font: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+            for (bytes, ch) in [
+                (font, '\u{10FFFF}'),
+                (font, ' '),
+                (&b"\0\0\0\0garbage"[..], 'a'),
+                (&[][..], 'a'),
+                (&font[..100], 'a'),
+            ] {
+                expect_err!(glyph(bytes, ch), splinelab::report::Error::Figure { .. })?;
+            }
+            Ok(())
+        }),
         case("mesh::save_into_a_missing_folder", || {
             let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
             let path = dir.path().join("missing").join("m.obj");

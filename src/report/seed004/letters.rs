@@ -78,22 +78,49 @@ pub fn letter_a(version: usize) -> Result<Letter> {
             })
         }
     };
-    let fail = || Error::Figure {
-        name: format!("the letter a of {name}"),
-        message: "the embedded font has no readable outline of 'a'".into(),
-    };
-    let face = ttf_parser::Face::parse(font, 0).map_err(|_| fail())?;
-    let glyph = face.glyph_index('a').ok_or_else(fail)?;
-    let em = f64::from(face.units_per_em());
-    let mut builder = Outline {
-        em,
-        contours: Vec::new(),
-    };
-    face.outline_glyph(glyph, &mut builder).ok_or_else(fail)?;
     Ok(Letter {
         name,
-        contours: builder.contours,
+        contours: glyph(font, 'a').map_err(|e| Error::Figure {
+            name: format!("the letter a of {name}"),
+            message: e.to_string(),
+        })?,
     })
+}
+
+/// The closed contours of the glyph of `ch` in a TrueType or OpenType font (the bytes of a
+/// `.ttf` or `.otf` file), in em units (module docs): a user's own letter for the seed-004
+/// study or for `splinelab fewest`.
+///
+/// ```
+/// # fn main() -> Result<(), Box<dyn std::error::Error>> {
+/// let font = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/fonts/DejaVuSans.ttf"))?;
+/// let g = splinelab::report::seed004::letters::glyph(&font, 'g')?;
+/// assert!(!g.is_empty() && g.iter().all(|c| c.outline.first() == c.outline.last()));
+/// assert!(splinelab::report::seed004::letters::glyph(&font, '\u{10FFFF}').is_err());
+/// # Ok(()) }
+/// ```
+///
+/// # Errors
+/// [`Error::Figure`] naming the character if the bytes are not a font the parser reads, the
+/// font has no glyph for `ch`, or the glyph has no outline (a space).
+pub fn glyph(font: &[u8], ch: char) -> Result<Vec<Contour>> {
+    let fail = |message: &str| Error::Figure {
+        name: format!("the glyph {ch:?}"),
+        message: message.into(),
+    };
+    let face = ttf_parser::Face::parse(font, 0)
+        .map_err(|e| fail(&format!("not a font the parser reads ({e})")))?;
+    let index = face
+        .glyph_index(ch)
+        .filter(|g| g.0 != 0)
+        .ok_or_else(|| fail("the font has no glyph for it"))?;
+    let mut builder = Outline {
+        em: f64::from(face.units_per_em()),
+        contours: Vec::new(),
+    };
+    face.outline_glyph(index, &mut builder)
+        .ok_or_else(|| fail("the glyph has no outline"))?;
+    Ok(builder.contours)
 }
 
 /// Collects contours from `ttf-parser`'s outline callbacks.
