@@ -16,6 +16,7 @@
 //! whose derivative jumps at a break (a B-spline with a knot of full multiplicity) converts
 //! as well.
 
+use crate::bezier::bernstein::bernstein3;
 use crate::curve::ParametricCurve;
 use crate::error::{Error, Result};
 use nalgebra::SVector;
@@ -63,20 +64,12 @@ fn convert<const N: usize, C: ParametricCurve<N> + ?Sized>(
     depth: u32,
     out: &mut Vec<CubicSegment<N>>,
 ) -> Result<()> {
-    let at = |u: f64| {
+    let at = |u: f64| -> Result<SVector<f64, N>> {
         let p = curve.point(a + u * (b - a));
-        if p.iter().all(|x| x.is_finite()) {
-            Ok(p)
-        } else {
-            Err(Error::NonFinite {
-                what: "curve point",
-                value: p
-                    .iter()
-                    .copied()
-                    .find(|x| !x.is_finite())
-                    .unwrap_or(f64::NAN),
-            })
+        for &x in p.iter() {
+            crate::error::finite("curve point", x)?;
         }
+        Ok(p)
     };
     let q = [at(0.0)?, at(1.0 / 3.0)?, at(2.0 / 3.0)?, at(1.0)?];
     // the Bézier points of the cubic through q at u = 0, 1/3, 2/3, 1 (the inverse of the
@@ -108,11 +101,8 @@ fn convert<const N: usize, C: ParametricCurve<N> + ?Sized>(
     convert(curve, m, b, tolerance, depth + 1, out)
 }
 
-/// The point of a cubic Bézier segment at `u` (Bernstein form).
+/// The point of a cubic Bézier segment at `u` (Bernstein form, [`bernstein3`]).
 pub fn bezier_point<const N: usize>(segment: &CubicSegment<N>, u: f64) -> SVector<f64, N> {
-    let v = 1.0 - u;
-    segment[0] * (v * v * v)
-        + segment[1] * (3.0 * u * v * v)
-        + segment[2] * (3.0 * u * u * v)
-        + segment[3] * (u * u * u)
+    let b = bernstein3(u);
+    segment[0] * b[0] + segment[1] * b[1] + segment[2] * b[2] + segment[3] * b[3]
 }

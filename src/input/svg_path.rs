@@ -14,7 +14,9 @@
 //!   unknown or unsupported command (`S`, `T`, `A`: convert them to `C`, `Q` first), a command
 //!   without its numbers, a number that is not finite, data before the first `M`.
 
+use crate::bezier::de_casteljau::de_casteljau_levels;
 use crate::error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
+use crate::metrics::curve::segment_distance;
 use nalgebra::Vector2;
 
 /// The most segments one Bézier command flattens into (2¹⁶).
@@ -217,41 +219,32 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
     Ok(out)
 }
 
-/// Appends the points of the cubic `p` (its start excluded) within `tolerance`.
+/// Appends the points of the cubic `p` (its start excluded) within `tolerance`: halved at
+/// `u = ½` by de Casteljau's triangle ([`de_casteljau_levels`]: the left half is the first
+/// point of each level, the right half the last, from the bottom up) until both inner
+/// control points lie within `tolerance` of the chord — then the curve, inside their convex
+/// hull, does too.
 fn flatten(p: &[Vector2<f64>; 4], tolerance: f64, out: &mut Vec<Vector2<f64>>) {
     let mut stack = vec![(*p, 0usize)];
     // depth 16 gives at most MAX_PIECES_PER_CURVE pieces
     while let Some((q, depth)) = stack.pop() {
-        if depth >= 16 || flat(&q, tolerance) {
-            out.push(q[3]);
-            continue;
-        }
-        let ab = (q[0] + q[1]) * 0.5;
-        let bc = (q[1] + q[2]) * 0.5;
-        let cd = (q[2] + q[3]) * 0.5;
-        let abc = (ab + bc) * 0.5;
-        let bcd = (bc + cd) * 0.5;
-        let m = (abc + bcd) * 0.5;
+        let flat = [q[1], q[2]]
+            .iter()
+            .all(|&c| segment_distance(c, q[0], q[3]) <= tolerance);
+        // four points make a triangle of four levels (the call cannot fail on them)
+        let levels = match de_casteljau_levels(&q, 0.5) {
+            Ok(levels) if depth < 16 && !flat => levels,
+            _ => {
+                out.push(q[3]);
+                continue;
+            }
+        };
+        let left = [0, 1, 2, 3].map(|k| levels[k][0]);
+        let right = [3, 2, 1, 0].map(|k| levels[k][levels[k].len() - 1]);
         // the second half first on the stack, so the first half is emitted first
-        stack.push(([m, bcd, cd, q[3]], depth + 1));
-        stack.push(([q[0], ab, abc, m], depth + 1));
+        stack.push((right, depth + 1));
+        stack.push((left, depth + 1));
     }
-}
-
-/// Whether both inner control points lie within `tolerance` of the chord (then the curve,
-/// inside their convex hull, does too).
-fn flat(q: &[Vector2<f64>; 4], tolerance: f64) -> bool {
-    let chord = q[3] - q[0];
-    let len = chord.norm();
-    let dist = |p: Vector2<f64>| {
-        if len == 0.0 {
-            (p - q[0]).norm()
-        } else {
-            let t = ((p - q[0]).dot(&chord) / (len * len)).clamp(0.0, 1.0);
-            (p - (q[0] + chord * t)).norm()
-        }
-    };
-    dist(q[1]) <= tolerance && dist(q[2]) <= tolerance
 }
 
 #[derive(Debug, Clone, Copy)]

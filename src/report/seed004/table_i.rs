@@ -628,8 +628,7 @@ struct Evidence<'a> {
 
 impl Evidence<'_> {
     /// The cells of a family.
-    fn of(&self, family: &str) -> impl Iterator<Item = &CellStudy> + '_ {
-        let family = family.to_string();
+    fn of<'s>(&'s self, family: &'s str) -> impl Iterator<Item = &'s CellStudy> + 's {
         self.cells
             .iter()
             .filter(move |c| c.cell.method.family() == family)
