@@ -29,12 +29,14 @@
 //!   LaTeX and MathML.
 //! - [`Mesh`]: a surface's triangles on a rectangle with its exact normals (`X_s × X_t`) and
 //!   texture coordinates, for the report layer's OBJ, PLY and STL files (`report::export`).
-//! - [`input`]: users' points from text (CSV, SVG path data), with the line and column of
-//!   what cannot be read.
+//! - [`input`]: users' points from text (CSV, SVG path data, SVG documents), with the line
+//!   and column of what cannot be read.
 //! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
 //! - [`report`] (feature `report`, on by default): figures and tables of the user's own
 //!   objects ([`report::draw`], [`report::table`](mod@report::table)), the seeds' outputs built with them, output
-//!   files and benchmarks used by the `splinelab` CLI and the notebooks.
+//!   files and benchmarks used by the `splinelab` CLI and the notebooks; a user's own points,
+//!   outlines and partitions through the methods ([`report::user`]: fit, fewest, surface) and
+//!   standard files out ([`report::export`]: OBJ, PLY, STL, SVG).
 //!
 //! # Features
 //!

@@ -1,4 +1,8 @@
-//! `splinelab`: regenerate every figure and table of the reports, or run the benchmarks.
+//! `splinelab`: regenerate every figure and table of the reports, run the benchmarks, or run
+//! the methods on a user's own data (`fit`, `fewest`, `surface`).
+
+#[path = "cli/user.rs"]
+mod user;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
@@ -33,6 +37,15 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
+    /// Fit one of seed 004's methods through your points: the curve sampled (CSV), drawn over
+    /// its points (PNG, SVG), as an SVG path of cubic Béziers, its formulas on request.
+    Fit(user::FitArgs),
+    /// For each method, the fewest points drawing your outline within a tolerance (Table I's
+    /// search): a table (CSV, Markdown) and one figure per method; progress on stderr.
+    Fewest(user::FewestArgs),
+    /// A built-in surface's bicubic Hermite spline surface on your partition, exported as a
+    /// mesh (OBJ, PLY, STL) with normals from the exact partials.
+    Surface(user::SurfaceArgs),
     /// Run the speed workloads and print one JSON object per line.
     Bench {
         /// Run only this workload (repeatable).
@@ -148,6 +161,12 @@ fn sweep_all(
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Some(Command::Fit(args)) => return user::fit(args),
+        Some(Command::Fewest(args)) => return user::fewest(args),
+        Some(Command::Surface(args)) => return user::surface(args),
+        _ => {}
+    }
     if let Some(Command::Site { out }) = &cli.command {
         return site(out);
     }

@@ -24,7 +24,7 @@ pub use num_dual::{Dual2_64, Dual3_64, Dual64, DualNum, HyperDual64};
 pub use crate::{
     AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline, CubicSpline,
     EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSurface, Interval,
-    KnotVector, Lagrange, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
+    KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
     Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
 };
 // formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and

@@ -479,3 +479,46 @@ fn a_symmetric_start_reaches_the_superellipse_minimum() {
     let line = sample_pieces(&curve, &curve.breaks(), FINAL_SAMPLES).unwrap();
     assert!(hausdorff(&line, &poly) <= 0.02 * 1.001);
 }
+
+/// `splinelab fewest` on the paper's shapes (issue 29): each shape given as an outline — its
+/// reference polyline, as a user's file would give it, searched through `Target::polyline`
+/// rather than the exact shape and without the paper's rule as a known configuration — gets
+/// Table I's automatic counts, every cell.
+#[cfg(feature = "report")]
+#[test]
+fn fewest_on_the_paper_shapes_as_outlines_gives_table_i_counts() {
+    use splinelab::report::user::fewest::{fewest, shape_outline, table_i_options, Tolerance};
+    use splinelab::seeds::seed004::SHAPES;
+    let cells = table_i().unwrap();
+    let families = [
+        Family::Angular,
+        Family::Cardinal,
+        Family::Cubic,
+        Family::BSpline,
+    ];
+    for (column, shape) in SHAPES {
+        let outline = shape_outline(column).unwrap();
+        let found = fewest(
+            &[outline],
+            Tolerance::default(),
+            &families,
+            &table_i_options(),
+            &|_| {},
+        )
+        .unwrap();
+        assert!((found.tolerance - shape.tolerance()).abs() <= 1e-12 * shape.tolerance());
+        for m in &found.methods {
+            let cell = cells
+                .iter()
+                .find(|c| c.column == column && Family::of(&c.automatic.method) == Some(m.family))
+                .unwrap();
+            assert_eq!(
+                m.counted(),
+                cell.automatic.measure.counted,
+                "{column} {:?}",
+                m.family
+            );
+            assert!(m.within_tolerance(), "{column} {:?}", m.family);
+        }
+    }
+}

@@ -309,3 +309,248 @@ fn a_run_stopped_by_a_file_size_limit_leaves_no_truncated_output() {
         }
     }
 }
+
+const POINTS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/examples/points.csv");
+const LEAF: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/examples/leaf.svg");
+
+/// The files of `dir`, sorted (none if it does not exist).
+fn files_in(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
+#[test]
+fn each_user_command_has_help_with_an_example() {
+    for command in ["fit", "fewest", "surface"] {
+        let help = stdout_of(&[command, "--help"]);
+        assert!(help.contains("Example"), "{command}: {help}");
+        assert!(help.contains(&format!("splinelab {command} ")), "{command}");
+    }
+}
+
+#[test]
+fn fit_writes_samples_figures_and_the_svg_path_and_prints_formulas() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("fit");
+    let printed = stdout_of(&[
+        "fit",
+        "--method",
+        "cardinal",
+        "--a",
+        "0.4",
+        "--closed",
+        "--formulas",
+        "latex",
+        "--out",
+        out.to_str().unwrap(),
+        POINTS,
+    ]);
+    assert_eq!(
+        files_in(&out),
+        [
+            "points-path.svg",
+            "points-samples.csv",
+            "points.png",
+            "points.svg"
+        ]
+    );
+    assert!(printed.contains("\\begin{align*}"), "{printed}");
+    let csv = std::fs::read_to_string(out.join("points-samples.csv")).unwrap();
+    assert!(csv.starts_with("t,x,y\n"));
+    let svg = std::fs::read_to_string(out.join("points-path.svg")).unwrap();
+    // a closed curve of cubic pieces: one M, a C a piece, closed by Z
+    assert!(
+        svg.contains("<path d=\"M 1.9 1.6 C ") && svg.contains(" Z\""),
+        "{svg}"
+    );
+    assert_eq!(svg.matches(" C ").count(), 7, "{svg}");
+}
+
+#[test]
+fn bad_input_files_fail_with_their_line_and_column_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let cases: [(&str, &[u8], &[&str], &str); 6] = [
+        (
+            "a.csv",
+            b"x,y\n0,0\n1,oops\n",
+            &["fit", "--method", "cubic"],
+            "line 3, column 3",
+        ),
+        (
+            "b.csv",
+            b"0,0\n1,nan\n2,2\n",
+            &["fit", "--method", "linear"],
+            "line 2, column 3",
+        ),
+        ("c.csv", b"", &["fit", "--method", "linear"], "points"),
+        (
+            "d.svg",
+            b"<svg><path d='M 0 0 A 1 1 0 0 1 2 2'/></svg>",
+            &["fewest"],
+            "arcs (A) are not supported",
+        ),
+        (
+            "e.path",
+            b"M 0 0 L 1 1 K 2 2",
+            &["fewest"],
+            "line 1, column 13",
+        ),
+        ("f.ttf", b"not a font", &["fewest", "--glyph", "a"], "'a'"),
+    ];
+    for (name, bytes, args, expected) in cases {
+        let file = dir.path().join(name);
+        std::fs::write(&file, bytes).unwrap();
+        let result = splinelab()
+            .args(args)
+            .arg("--out")
+            .arg(&out)
+            .arg(&file)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&result.stderr);
+        assert!(!result.status.success(), "{name}");
+        assert!(err.contains(expected), "{name}: {err}");
+        assert!(!err.contains("panicked"), "{name}: {err}");
+        assert!(
+            files_in(&out).is_empty(),
+            "{name} wrote {:?}",
+            files_in(&out)
+        );
+    }
+}
+
+#[test]
+fn fewest_on_a_paper_shape_prints_table_i_counts_and_writes_a_table_and_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let printed = stdout_of(&[
+        "fewest",
+        "--shape",
+        "parabola-1",
+        "--method",
+        "cubic,bspline",
+        "--out",
+        dir.path().to_str().unwrap(),
+    ]);
+    // Table I's automatic counts for Parabola 2 (our parabola-1): cubic 4, B-spline 3
+    assert!(printed.contains("| cubic | 4 |"), "{printed}");
+    assert!(printed.contains("| bspline | 3 |"), "{printed}");
+    assert_eq!(
+        files_in(dir.path()),
+        [
+            "parabola-1-bspline.png",
+            "parabola-1-bspline.svg",
+            "parabola-1-cubic.png",
+            "parabola-1-cubic.svg",
+            "parabola-1-fewest.csv",
+            "parabola-1-fewest.md"
+        ]
+    );
+}
+
+#[test]
+fn fewest_on_an_svg_outline_reports_progress_on_stderr() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = splinelab()
+        .args(["fewest", "--method", "linear,cubic", "--out"])
+        .arg(dir.path())
+        .arg(LEAF)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    // not a terminal: one line a finished search
+    assert_eq!(err.matches("searches").count(), 2, "{err}");
+    assert!(err.contains("2/2 searches"), "{err}");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("| linear |"));
+}
+
+#[test]
+fn surface_exports_a_mesh_of_the_users_partition() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, extra) in [
+        ("t.obj", &[][..]),
+        ("t.ply", &["--ascii"][..]),
+        ("t.stl", &[][..]),
+    ] {
+        let path = dir.path().join(name);
+        let printed = stdout_of(
+            &[
+                &[
+                    "surface",
+                    "--torus",
+                    "3,1",
+                    "--partition",
+                    "6x4",
+                    "--samples",
+                    "2",
+                ][..],
+                extra,
+                &["--export", path.to_str().unwrap()],
+            ]
+            .concat(),
+        );
+        assert!(
+            printed.contains("6 x 4 bicubic Hermite patches"),
+            "{printed}"
+        );
+        assert!(
+            printed.contains("13 x 9") || printed.contains("117 vertices"),
+            "{printed}"
+        );
+        assert!(std::fs::metadata(&path).unwrap().len() > 0);
+    }
+    let obj = std::fs::read_to_string(dir.path().join("t.obj")).unwrap();
+    assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count(), 13 * 9);
+    let sphere = dir.path().join("s.stl");
+    stdout_of(&[
+        "surface",
+        "--sphere",
+        "--s-nodes",
+        "0,3,6.283185307179586",
+        "--t-nodes",
+        "-1.5707963267948966,0,1.5707963267948966",
+        "--export",
+        sphere.to_str().unwrap(),
+    ]);
+    // refusals, nothing written
+    for args in [
+        &["surface", "--torus", "--partition", "0x4"][..],
+        &["surface", "--torus", "2", "--partition", "4x4"][..],
+        &["surface", "--exp", "--partition", "4x4", "--samples", "0"][..],
+        &[
+            "surface",
+            "--sphere",
+            "--s-nodes",
+            "0,0",
+            "--t-nodes",
+            "0,1",
+        ][..],
+    ] {
+        let bad = dir.path().join("bad.obj");
+        let out = splinelab()
+            .args(args)
+            .arg("--export")
+            .arg(&bad)
+            .output()
+            .unwrap();
+        assert!(!out.status.success(), "{args:?}");
+        assert!(!bad.exists(), "{args:?}");
+    }
+    let out = splinelab()
+        .args(["surface", "--exp", "--partition", "2x2", "--export"])
+        .arg(dir.path().join("x.gltf"))
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&out.stderr).contains(".obj, .ply or .stl"));
+}

@@ -6,4 +6,4 @@ pub mod csv;
 pub mod svg_path;
 
 pub use csv::{points_from_csv, Columns};
-pub use svg_path::{contours_from_svg_path, Contour};
+pub use svg_path::{contours_from_svg_document, contours_from_svg_path, Contour};

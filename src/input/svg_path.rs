@@ -100,7 +100,7 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
             }
             Ok(v)
         };
-        if !matches!(c.to_ascii_uppercase(), 'M' | 'Z') && out.is_empty() {
+        if !c.eq_ignore_ascii_case(&'M') && out.is_empty() {
             return Err(parse_error(d, at, format!("{c} before the first M")));
         }
         let mut new_points: Vec<Vector2<f64>> = Vec::new();
@@ -309,10 +309,160 @@ fn tokenize(d: &str) -> Result<Vec<Token>> {
 }
 
 /// A parse error at byte offset `at` of `d`, as line and column (1-based, in characters).
-fn parse_error(d: &str, at: usize, message: String) -> Error {
-    let before = &d[..at.min(d.len())];
+/// The contours of every `<path>` element's `d` attribute in an SVG document, in document
+/// order, each flattened within `tolerance` ([`contours_from_svg_path`]). The coordinates are
+/// the document's own (SVG's `y` points down; no `transform` is applied). Comments are
+/// skipped; other elements (`<rect>`, `<circle>`, text) are not read.
+///
+/// ```
+/// use splinelab::input::svg_path::contours_from_svg_document;
+/// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
+///   <path fill="none" d="M 0 0 L 4 0 L 4 3 Z"/>
+/// </svg>"#;
+/// let c = contours_from_svg_document(svg, 0.01)?;
+/// assert_eq!(c[0].points.len(), 4);
+/// let err = contours_from_svg_document("<svg>\n<path d='M 0 0 L 1'/></svg>", 0.01).unwrap_err();
+/// assert_eq!(err.to_string(), "SVG path, line 2, column 16: L needs 2 numbers, found 1");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::Parse`] with the document's line and column: a `<path>` without a `d`, an
+/// unterminated tag or attribute, a document with no path; the errors of
+/// [`contours_from_svg_path`] placed in the document.
+pub fn contours_from_svg_document(text: &str, tolerance: f64) -> Result<Vec<Contour>> {
+    let mut out = Vec::new();
+    let mut at = 0;
+    let mut paths = 0usize;
+    while let Some(found) = next_tag(text, at) {
+        let (start, name) = found;
+        let end = match text[start..].find('>') {
+            Some(e) => start + e,
+            None => {
+                return Err(parse_error(
+                    text,
+                    start,
+                    format!("the tag <{name} is not closed"),
+                ))
+            }
+        };
+        at = end + 1;
+        if name != "path" {
+            continue;
+        }
+        paths += 1;
+        let (value_at, value) = d_attribute(text, start, end)?;
+        let contours = contours_from_svg_path(value, tolerance).map_err(|e| match e {
+            Error::Parse {
+                line,
+                column,
+                message,
+                ..
+            } => {
+                let (l0, c0) = position(text, value_at);
+                let column = if line == 1 { c0 + column - 1 } else { column };
+                Error::Parse {
+                    what: WHAT,
+                    line: l0 + line - 1,
+                    column,
+                    message,
+                }
+            }
+            other => other,
+        })?;
+        if out.len().saturating_add(contours.len()) > MAX_ELEMENTS {
+            return Err(Error::TooLarge {
+                what: "SVG contours",
+                got: usize::MAX,
+                max: MAX_ELEMENTS,
+            });
+        }
+        out.extend(contours);
+    }
+    if paths == 0 {
+        return Err(parse_error(
+            text,
+            text.len(),
+            "the document has no <path> element".into(),
+        ));
+    }
+    Ok(out)
+}
+
+/// The next tag from byte `at`: its start and name; comments, `<?…?>` and `<!…>` skipped.
+fn next_tag(text: &str, mut at: usize) -> Option<(usize, &str)> {
+    loop {
+        let start = at + text.get(at..)?.find('<')?;
+        let rest = &text[start + 1..];
+        if let Some(comment) = rest.strip_prefix("!--") {
+            // past the comment's end, or the text's if it has none
+            at = start + 4 + comment.find("-->").map_or(comment.len(), |e| e + 3);
+            continue;
+        }
+        let name_len = rest
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == ':' || c == '-' || c == '_'))
+            .unwrap_or(rest.len());
+        if name_len == 0 {
+            // a closing tag, a declaration or a processing instruction
+            at = start + 1;
+            continue;
+        }
+        let name = &rest[..name_len];
+        return Some((start, name.rsplit(':').next().unwrap_or(name)));
+    }
+}
+
+/// The `d` attribute's value within the tag `text[start..end]`, with its byte offset.
+fn d_attribute(text: &str, start: usize, end: usize) -> Result<(usize, &str)> {
+    let tag = &text[start..end];
+    let mut from = 0;
+    while let Some(i) = tag[from..].find('d') {
+        let i = from + i;
+        from = i + 1;
+        let before_ok = tag[..i].ends_with(|c: char| c.is_ascii_whitespace());
+        let after = tag[i + 1..].trim_start();
+        if !before_ok || !after.starts_with('=') {
+            continue;
+        }
+        let value = after[1..].trim_start();
+        let quote = match value.chars().next() {
+            Some(q @ ('"' | '\'')) => q,
+            _ => {
+                return Err(parse_error(
+                    text,
+                    start + i,
+                    "the d attribute's value is not quoted".into(),
+                ))
+            }
+        };
+        // the value starts after its quote, `value` being a suffix of the tag
+        let value_at = start + (tag.len() - value.len()) + 1;
+        return match text[value_at..].find(quote) {
+            Some(close) => Ok((value_at, &text[value_at..value_at + close])),
+            None => Err(parse_error(
+                text,
+                value_at - 1,
+                "the d attribute is not closed".into(),
+            )),
+        };
+    }
+    Err(parse_error(
+        text,
+        start,
+        "a <path> without a d attribute".into(),
+    ))
+}
+
+/// The 1-based line and column of byte `at` of `text`.
+fn position(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at.min(text.len())];
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+fn parse_error(d: &str, at: usize, message: String) -> Error {
+    let (line, column) = position(d, at);
     Error::Parse {
         what: WHAT,
         line,

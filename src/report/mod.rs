@@ -10,7 +10,10 @@
 //!   `polars` feature, for any polars DataFrame through `Frame::try_from`).
 //! - [`frame`]: named columns of numbers, integers, flags or text, the data of a table;
 //!   [`record`]: a table from a slice of row structs ([`crate::record!`]).
-//! - [`export`]: meshes as OBJ, PLY and STL, written atomically.
+//! - [`export`]: meshes as OBJ, PLY and STL, curves as SVG paths, written atomically.
+//! - [`user`]: a user's own data through the seeds' methods — fit a curve to points, the
+//!   fewest points for an outline, a spline surface on a partition as a mesh (the CLI's
+//!   `fit`, `fewest` and `surface`).
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas, labelled values.
 //! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
@@ -42,6 +45,7 @@ pub mod site;
 pub mod style;
 mod supersample;
 pub mod table;
+pub mod user;
 
 pub use error::{Error, Result};
 pub use figure::Figure;

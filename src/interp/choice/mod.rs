@@ -59,7 +59,16 @@
 //! most [`MAX_ORDER`]) the control polygon is fitted to the reference by least squares with
 //! parameter correction ([`crate::bspline::fit::fit_bspline`]), and the smallest vertex count
 //! that any order brings under the tolerance is kept (the lowest error among its orders);
-//! every count below it is fitted.
+//! every count below it is fitted — or, with [`SearchOptions::every_count_below`] off, the
+//! counts are doubled up to one within the tolerance and bisected below it, the count one
+//! below the answer fitted with every order.
+//!
+//! **Dense references** (more than [`COARSE_ABOVE`] vertices, a digitised outline): the search
+//! measures its candidates against a simplification of the reference within
+//! [`COARSE_FRACTION`] of the tolerance ([`simplified`]; the two are that close in Hausdorff
+//! distance, so every error it compares is within that of the exact one), and its answers
+//! against the whole reference ([`Target::measure`]); a B-spline's orders are screened so too
+//! and the best measured exactly. The paper's shapes, letters and coast are below the limit.
 
 pub mod bound;
 mod bspline;
@@ -72,7 +81,7 @@ mod target;
 
 pub use count::{fewest_points, max_distinct_for, search};
 pub use layout::{A_STEP, GUIDE_REACH};
-pub use target::{Target, CORNER_TURN};
+pub use target::{simplified, Target, COARSE_ABOVE, COARSE_FRACTION, CORNER_TURN, MAX_RUN};
 
 use crate::interp::methods::Method;
 use crate::metrics::curve::{Distances, Smoothness};

@@ -33,7 +33,21 @@ pub struct Target {
     shape_inflections: Option<usize>,
     /// The mirror symmetries of the reference ([`super::symmetry`]).
     mirrors: Vec<Mirror>,
+    /// For a reference of more than [`COARSE_ABOVE`] vertices: its simplification within
+    /// [`COARSE_FRACTION`] of the tolerance ([`simplified`]), against which the search's error
+    /// is measured ([`Target::measure`] always uses the whole reference).
+    coarse: Option<SegmentTree>,
 }
+
+/// References with more vertices than this are searched against a simplification
+/// ([`Target::measure`] stays exact): a digitised outline of 10⁴ points costs the search its
+/// distance from every vertex to every curve tried, a simplification within a sixty-fourth of
+/// the tolerance a few hundred. The paper's shapes (2 049 vertices), letters and coast are
+/// below it.
+pub const COARSE_ABOVE: usize = 4096;
+
+/// The simplification's distance from the reference, as a fraction of the tolerance.
+pub const COARSE_FRACTION: f64 = 1.0 / 64.0;
 
 /// A reference vertex turning by more than this (radians, 30°) is a corner, which the
 /// feature placement puts a point on.
@@ -112,8 +126,10 @@ impl Target {
             corners,
             shape_inflections: None,
             mirrors: Vec::new(),
+            coarse: None,
         }
-        .with_mirrors())
+        .with_mirrors()
+        .with_coarse())
     }
 
     /// The target of an exact shape: its reference with `samples` segments
@@ -149,7 +165,22 @@ impl Target {
     /// [`Error::NotPositive`] for a tolerance that is not finite and positive.
     pub fn with_tolerance(mut self, tolerance: f64) -> Result<Self> {
         self.tolerance = crate::error::positive("target tolerance", tolerance)?;
-        Ok(self)
+        Ok(self.with_coarse())
+    }
+
+    /// Sets [`Target::coarse`] for the current tolerance.
+    fn with_coarse(mut self) -> Self {
+        let points = self.tree.points();
+        self.coarse = (points.len() > COARSE_ABOVE)
+            .then(|| SegmentTree::new(&simplified(points, COARSE_FRACTION * self.tolerance)).ok())
+            .flatten();
+        self
+    }
+
+    /// Whether the reference has more than [`COARSE_ABOVE`] vertices, so the search measures
+    /// its candidates against a simplification ([`simplified`]) and only its answers exactly.
+    pub fn is_dense(&self) -> bool {
+        self.coarse.is_some()
     }
 
     /// The reference polyline.
@@ -437,10 +468,51 @@ impl Target {
         if sample_pieces_into(&curve, &curve.breaks(), SEARCH_SAMPLES, &mut buf.line).is_err() {
             return f64::INFINITY;
         }
-        distances_to(&buf.line, &self.tree)
+        // the simplification is within COARSE_FRACTION of the tolerance of the reference (in
+        // Hausdorff distance: every point of either lies that close to the other), so the
+        // error against it is too
+        distances_to(&buf.line, self.coarse.as_ref().unwrap_or(&self.tree))
             .map(|d| d.hausdorff())
             .unwrap_or(f64::INFINITY)
     }
+}
+
+/// The most vertices one segment of [`simplified`] stands for.
+pub const MAX_RUN: usize = 64;
+
+/// The vertices of a simplification of the polyline `points` within `epsilon`: greedily from
+/// each kept vertex, the farthest vertex (at most [`MAX_RUN`] on) such that every vertex
+/// between lies within `epsilon` of the segment to it. The two are within `epsilon` of each
+/// other in Hausdorff distance: every vertex of `points` — so every point of it, a segment's
+/// `epsilon`-neighbourhood being convex — lies within `epsilon` of the simplified polyline,
+/// and every point of a kept segment within `epsilon` of `points` (the polyline between its
+/// ends runs inside its `epsilon`-band from one end to the other, so it passes every point
+/// of the segment at that distance). The ends are the polyline's; the work is linear in the
+/// vertices (at most [`MAX_RUN`]² distance evaluations per kept vertex).
+pub fn simplified(points: &[Vector2<f64>], epsilon: f64) -> Vec<Vector2<f64>> {
+    let n = points.len();
+    if n < 3 {
+        return points.to_vec();
+    }
+    let mut out = vec![points[0]];
+    let mut a = 0;
+    let mut b = 1;
+    while b < n - 1 {
+        let c = b + 1;
+        let fits = c - a <= MAX_RUN
+            && points[a + 1..c]
+                .iter()
+                .all(|&p| segment_distance(p, points[a], points[c]) <= epsilon);
+        if fits {
+            b = c;
+        } else {
+            out.push(points[b]);
+            a = b;
+            b = a + 1;
+        }
+    }
+    out.push(points[n - 1]);
+    out
 }
 
 /// The breaks of a shape's pieces: the rectangle's corners, else its domain's ends.

@@ -1,0 +1,212 @@
+//! One of seed 004's methods through a user's points ([`Fit`]): the curve sampled as CSV, drawn
+//! over its points, as an SVG path of cubic Béziers, and its formulas piece by piece.
+//!
+//! ```
+//! use nalgebra::Vector2;
+//! use splinelab::report::user::fit::{Fit, FormulaStyle};
+//! use splinelab::{CubicEnd, Method};
+//! let points = [(0.0, 0.0), (1.0, 1.0), (2.0, 0.0), (3.0, 1.0)].map(|(x, y)| Vector2::new(x, y));
+//! let fit = Fit::try_new(&points, Method::Cubic { end: CubicEnd::Relaxed }, false)?;
+//! let csv = fit.samples_csv(4)?; // t,x,y: 4 samples a piece and the end
+//! assert_eq!(csv.lines().count(), 1 + 3 * 4 + 1);
+//! let formulas = fit.formulas(FormulaStyle::Plain)?;
+//! assert!(formulas.starts_with("piece 1 of 3"));
+//! # Ok::<(), splinelab::report::Error>(())
+//! ```
+
+use crate::bezier::from_curve::{cubic_segments, CubicSegment};
+use crate::curve::ParametricCurve;
+use crate::interp::methods::{Interpolant, Method};
+use crate::printed::decimal;
+use crate::report::error::Result;
+use crate::report::figure::Figure;
+use crate::report::plot2d::{xy, Figure2d, Panel, Series, Style, GREY, INK};
+use crate::report::style::LINE_PALETTE;
+use crate::report::Legend;
+use crate::symbolic::curve_formulas_local;
+use nalgebra::Vector2;
+use std::fmt::Write as _;
+
+/// A method's curve through a user's points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Fit {
+    /// The method with its parameter.
+    pub method: Method,
+    /// Whether the curve is closed (as the paper closes curves: [`Method::prepared`]).
+    pub closed: bool,
+    /// The points given.
+    pub points: Vec<Vector2<f64>>,
+    /// The curve.
+    pub curve: Interpolant,
+}
+
+/// How [`Fit::formulas`] writes the formulas.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FormulaStyle {
+    /// Plain text (`1 + 3*u^2 - 2*u^3`), one line a coordinate.
+    Plain,
+    /// LaTeX, one `align*` environment a piece.
+    Latex,
+}
+
+impl Fit {
+    /// The curve of `method` through `points` (a B-spline's points are its control polygon),
+    /// closed when `closed`.
+    ///
+    /// # Errors
+    /// The errors of [`Method::curve`] (too few points, coincident neighbours, a bad
+    /// parameter, non-finite coordinates, points through which the method has no curve) as
+    /// [`crate::report::Error::Core`]; [`crate::Error::NonFinite`] if the curve is not finite
+    /// at a break between its pieces.
+    pub fn try_new(points: &[Vector2<f64>], method: Method, closed: bool) -> Result<Fit> {
+        let curve = method.curve(points, closed)?;
+        for t in curve.breaks() {
+            curve.try_point(t)?;
+        }
+        Ok(Fit {
+            method,
+            closed,
+            points: points.to_vec(),
+            curve,
+        })
+    }
+
+    /// The points the method draws through: the given ones and a closed curve's repeats.
+    pub fn drawn_points(&self) -> Vec<Vector2<f64>> {
+        self.method.prepared(&self.points, self.closed)
+    }
+
+    /// `(t, point)` at `per_piece` equal steps of every piece and at the curve's end.
+    ///
+    /// # Errors
+    /// [`crate::Error::TooFewSamples`] below 2 samples a piece; [`crate::Error::TooLarge`] if the
+    /// samples exceed [`crate::error::MAX_ELEMENTS`]; [`crate::Error::NonFinite`] where the
+    /// curve is not finite.
+    pub fn samples(&self, per_piece: usize) -> Result<Vec<(f64, Vector2<f64>)>> {
+        if per_piece < 2 {
+            return Err(crate::Error::TooFewSamples {
+                what: "samples per piece",
+                got: per_piece,
+            }
+            .into());
+        }
+        let breaks = self.curve.breaks();
+        let pieces = breaks.len().saturating_sub(1);
+        let total = pieces
+            .checked_mul(per_piece)
+            .and_then(|n| n.checked_add(1))
+            .filter(|&n| n <= crate::error::MAX_ELEMENTS)
+            .ok_or(crate::Error::TooLarge {
+                what: "curve samples",
+                got: pieces.saturating_mul(per_piece),
+                max: crate::error::MAX_ELEMENTS,
+            })?;
+        let mut out = Vec::with_capacity(total);
+        for w in breaks.windows(2) {
+            for k in 0..per_piece {
+                let t = w[0] + (w[1] - w[0]) * k as f64 / per_piece as f64;
+                out.push((t, self.curve.try_point(t)?));
+            }
+        }
+        if let Some(&end) = breaks.last() {
+            out.push((end, self.curve.try_point(end)?));
+        }
+        Ok(out)
+    }
+
+    /// [`Fit::samples`] as CSV: a header `t,x,y`, then one line a sample, every number the
+    /// shortest decimal that reads back to the same `f64`.
+    ///
+    /// # Errors
+    /// As [`Fit::samples`].
+    pub fn samples_csv(&self, per_piece: usize) -> Result<String> {
+        let samples = self.samples(per_piece)?;
+        let mut csv = String::from("t,x,y\n");
+        for (t, p) in samples {
+            let _ = writeln!(csv, "{},{},{}", decimal(t), decimal(p.x), decimal(p.y));
+        }
+        Ok(csv)
+    }
+
+    /// The curve as cubic Bézier segments ([`cubic_segments`]): exact for the cubic pieces of
+    /// the cardinal and cubic splines, B-splines of order ≤ 4 and polygons; the Angular
+    /// spline's and higher-order B-splines' pieces halved until within `tolerance`.
+    ///
+    /// # Errors
+    /// As [`cubic_segments`].
+    pub fn bezier(&self, tolerance: f64) -> Result<Vec<CubicSegment<2>>> {
+        Ok(cubic_segments(&self.curve, tolerance)?)
+    }
+
+    /// The curve over its points (a B-spline's control polygon drawn), titled with the method.
+    ///
+    /// # Errors
+    /// As [`ParametricCurve::polyline`].
+    pub fn figure(&self) -> Result<Figure> {
+        let drawn = self.drawn_points();
+        let title = format!(
+            "{} {} {} points{}",
+            self.method.legend(),
+            if matches!(self.method, Method::BSpline { .. }) {
+                "on the control polygon of"
+            } else {
+                "through"
+            },
+            self.points.len(),
+            if self.closed { ", closed" } else { "" }
+        );
+        let pieces = self.curve.breaks().len().saturating_sub(1).max(1);
+        let curve = self
+            .curve
+            .polyline(pieces.saturating_mul(64).min(1 << 16))?;
+        let mut panel = Panel::new("", "x", "y")
+            .equal()
+            .with(Series::line("curve", xy(&curve), LINE_PALETTE[0]).width(3));
+        if matches!(self.method, Method::BSpline { .. }) {
+            panel = panel.with(Series::line("control polygon", xy(&drawn), GREY).width(1));
+        }
+        let panel = panel.with(Series::line("points", xy(&drawn), INK).styled(Style::Crosses(5)));
+        Ok(Figure::from(Figure2d::new(title, vec![panel], (1, 1))).with_size(800, 640))
+    }
+
+    /// The formulas of `x` and `y` on every piece, in the piece's local variable
+    /// `u = t − tᵢ` ([`curve_formulas_local`], traced from the same generic code that
+    /// evaluates the curve), with the piece's interval.
+    ///
+    /// # Errors
+    /// As [`curve_formulas_local`] (a formula beyond the size limits).
+    pub fn formulas(&self, style: FormulaStyle) -> Result<String> {
+        let breaks = self.curve.breaks();
+        let pieces = breaks.len().saturating_sub(1);
+        let mut out = String::new();
+        for (i, w) in breaks.windows(2).enumerate() {
+            let f = curve_formulas_local(&self.curve, 0.5 * (w[0] + w[1]))?;
+            let origin = crate::printed::number(f.origin.unwrap_or(0.0));
+            let (a, b) = (crate::printed::number(w[0]), crate::printed::number(w[1]));
+            match style {
+                FormulaStyle::Plain => {
+                    let _ = writeln!(
+                        out,
+                        "piece {} of {pieces}, t in [{a}, {b}], u = t - {origin}:",
+                        i + 1
+                    );
+                    for (name, x) in ["x", "y"].iter().zip(&f.point) {
+                        let _ = writeln!(out, "  {name}(u) = {}", x.plain());
+                    }
+                }
+                FormulaStyle::Latex => {
+                    let _ = writeln!(
+                        out,
+                        "% piece {} of {pieces}, t \\in [{a}, {b}], u = t - {origin}\n\\begin{{align*}}",
+                        i + 1
+                    );
+                    for (name, x) in ["x", "y"].iter().zip(&f.point) {
+                        let _ = writeln!(out, "  {name}(u) &= {} \\\\", x.latex());
+                    }
+                    out.push_str("\\end{align*}\n");
+                }
+            }
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,200 @@
+//! A user's points and outlines from files, by their extension: CSV points (`.csv`, `.txt`,
+//! `.dat`, `.xy`), the paths of an SVG document (`.svg`), SVG path data alone (`.path`), a glyph
+//! of a font (`.ttf`, `.otf`).
+
+use crate::input::Contour;
+use crate::input::{contours_from_svg_document, contours_from_svg_path, points_from_csv, Columns};
+use crate::report::error::{Error, Result};
+use nalgebra::Vector2;
+use std::path::Path;
+
+/// The largest file read (1 GiB): a larger one is refused before it is read.
+pub const MAX_FILE_BYTES: u64 = 1 << 30;
+
+/// Fraction of an SVG outline's size within which its curves are flattened by default.
+pub const FLATTEN_FRACTION: f64 = 1e-4;
+
+/// How [`read_outline`] reads a file.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ReadOptions {
+    /// The CSV columns of `x` and `y`.
+    pub columns: Columns,
+    /// Whether a CSV outline is closed; `None`: closed when its last point is its first.
+    pub closed: Option<bool>,
+    /// The character of a font file to read.
+    pub glyph: Option<char>,
+    /// The flattening tolerance of an SVG's curves (a distance); `None`:
+    /// [`FLATTEN_FRACTION`] of the outline's size.
+    pub flatten: Option<f64>,
+}
+
+/// What kind of file a path names, by its extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    /// Points as CSV.
+    Csv,
+    /// An SVG document.
+    Svg,
+    /// SVG path data (the `d` attribute's text).
+    PathData,
+    /// A TrueType or OpenType font.
+    Font,
+}
+
+impl FileKind {
+    /// The kind of `path` by its extension (any case).
+    ///
+    /// # Errors
+    /// [`crate::Error::Parse`] for an extension none of the readers takes.
+    pub fn of(path: &Path) -> Result<FileKind> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        Ok(match ext.as_deref() {
+            Some("csv" | "txt" | "dat" | "xy") => FileKind::Csv,
+            Some("svg") => FileKind::Svg,
+            Some("path") => FileKind::PathData,
+            Some("ttf" | "otf") => FileKind::Font,
+            _ => {
+                return Err(crate::Error::Parse {
+                    what: "input file name",
+                    line: 1,
+                    column: 1,
+                    message: format!(
+                        "{}: the extension says neither CSV points (.csv, .txt, .dat, .xy), an SVG document (.svg), SVG path data (.path) nor a font (.ttf, .otf)",
+                        path.display()
+                    ),
+                }
+                .into())
+            }
+        })
+    }
+}
+
+/// The bytes of `path`, refused beyond [`MAX_FILE_BYTES`].
+///
+/// # Errors
+/// [`Error::Io`] if it cannot be read or is too large.
+pub fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    let io = |message: String| Error::Io {
+        path: path.to_path_buf(),
+        message,
+    };
+    let meta = std::fs::metadata(path).map_err(|e| io(e.to_string()))?;
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(io(format!(
+            "{} bytes: larger than the {MAX_FILE_BYTES} bytes read",
+            meta.len()
+        )));
+    }
+    std::fs::read(path).map_err(|e| io(e.to_string()))
+}
+
+/// The text of `path` (UTF-8).
+///
+/// # Errors
+/// As [`read_bytes`]; [`crate::Error::Parse`] at the first byte that is not UTF-8.
+pub fn read_text(path: &Path) -> Result<String> {
+    let bytes = read_bytes(path)?;
+    String::from_utf8(bytes).map_err(|e| {
+        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let text = String::from_utf8_lossy(valid);
+        let line = text.matches('\n').count() + 1;
+        let column = text.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        crate::Error::Parse {
+            what: "input file",
+            line,
+            column,
+            message: "not UTF-8 text".into(),
+        }
+        .into()
+    })
+}
+
+/// The points of a CSV file (`x`, `y` by `columns`), for [`super::fit::Fit`].
+///
+/// # Errors
+/// As [`read_text`] and [`points_from_csv`].
+pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> {
+    let text = read_text(path)?;
+    Ok(points_from_csv::<2>(&text, columns)?)
+}
+
+/// The contours of an outline file ([`FileKind`]): a CSV's points as one contour (closed as
+/// `options.closed` says), an SVG document's or path data's contours (curves flattened within
+/// `options.flatten`; an SVG document's `y` turned up, as the figures draw), a glyph's closed
+/// contours in em units.
+///
+/// # Errors
+/// As [`FileKind::of`], [`read_text`], [`points_from_csv`], [`contours_from_svg_document`],
+/// [`contours_from_svg_path`] and [`crate::report::seed004::letters::glyph`];
+/// [`crate::Error::Parse`] for a font without `options.glyph`.
+pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> {
+    let kind = FileKind::of(path)?;
+    match kind {
+        FileKind::Csv => {
+            let points = read_points(path, &options.columns)?;
+            let closed = options
+                .closed
+                .unwrap_or(points.len() > 2 && points.first() == points.last());
+            Ok(vec![Contour { points, closed }])
+        }
+        FileKind::Svg | FileKind::PathData => {
+            let text = read_text(path)?;
+            let parse = |tolerance: f64| -> Result<Vec<Contour>> {
+                Ok(if kind == FileKind::Svg {
+                    contours_from_svg_document(&text, tolerance)?
+                } else {
+                    contours_from_svg_path(&text, tolerance)?
+                })
+            };
+            let tolerance = match options.flatten {
+                Some(t) => t,
+                // the size from the path's end points (curves as chords), then the curves
+                None => FLATTEN_FRACTION * size(&parse(f64::MAX)?),
+            };
+            let mut contours = parse(tolerance)?;
+            if kind == FileKind::Svg {
+                for p in contours.iter_mut().flat_map(|c| c.points.iter_mut()) {
+                    p.y = -p.y;
+                }
+            }
+            Ok(contours)
+        }
+        FileKind::Font => {
+            let ch = options.glyph.ok_or(crate::Error::Parse {
+                what: "font outline",
+                line: 1,
+                column: 1,
+                message: "a font needs the character to read (--glyph)".into(),
+            })?;
+            let font = read_bytes(path)?;
+            Ok(crate::report::seed004::letters::glyph(&font, ch)?
+                .into_iter()
+                .map(|c| Contour {
+                    points: c.outline,
+                    closed: true,
+                })
+                .collect())
+        }
+    }
+}
+
+/// The larger side of the bounding box of `contours`' points (0 for none).
+pub fn size(contours: &[Contour]) -> f64 {
+    let all = contours.iter().flat_map(|c| c.points.iter());
+    let (lo, hi) = all.fold(
+        (
+            Vector2::repeat(f64::INFINITY),
+            Vector2::repeat(f64::NEG_INFINITY),
+        ),
+        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+    );
+    let side = (hi - lo).amax();
+    if side.is_finite() {
+        side
+    } else {
+        0.0
+    }
+}
