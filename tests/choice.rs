@@ -18,6 +18,14 @@ use splinelab::Error;
 
 type V = Vector2<f64>;
 
+/// Table I's 36 cells, computed once for the tests that read them (the determinism test
+/// computes its own twice).
+fn cells() -> &'static [splinelab::study::table_i::CellStudy] {
+    static CELLS: std::sync::OnceLock<Vec<splinelab::study::table_i::CellStudy>> =
+        std::sync::OnceLock::new();
+    CELLS.get_or_init(|| table_i().unwrap())
+}
+
 /// The error of a choice measured again by brute force against a reference of its own
 /// (another sampling of the exact shape).
 fn brute_error(shape: &Shape, method: &Method, points: &[V]) -> f64 {
@@ -53,7 +61,7 @@ fn the_relaxed_cubic_circle_is_first_under_the_tolerance_at_11_points() {
 /// is optimised for this: Cargo.toml's `[profile.dev]`).
 #[test]
 fn automatic_counts_never_exceed_the_paper_rule_and_their_errors_hold() {
-    let cells = table_i().unwrap();
+    let cells = cells();
     assert_eq!(cells.len(), 36);
     for (index, study) in cells.iter().enumerate() {
         let auto = &study.automatic;
@@ -305,7 +313,7 @@ const COUNTS_BEFORE_ISSUE_25: [usize; 36] = [
 
 #[test]
 fn no_count_is_worse_than_before_the_global_search_and_the_evidence_holds() {
-    let cells = table_i().unwrap();
+    let cells = cells();
     for (index, (study, &before)) in cells.iter().zip(&COUNTS_BEFORE_ISSUE_25).enumerate() {
         let auto = &study.automatic;
         assert!(auto.within_tolerance, "cell {index}");
@@ -489,7 +497,7 @@ fn a_symmetric_start_reaches_the_superellipse_minimum() {
 fn fewest_on_the_paper_shapes_as_outlines_gives_table_i_counts() {
     use splinelab::report::user::fewest::{fewest, shape_outline, table_i_options, Tolerance};
     use splinelab::seeds::seed004::SHAPES;
-    let cells = table_i().unwrap();
+    let cells = cells();
     let families = [
         Family::Angular,
         Family::Cardinal,
