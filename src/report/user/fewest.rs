@@ -388,11 +388,25 @@ pub fn figures(found: &Fewest) -> Result<Vec<(Family, Figure)>> {
                 .iter()
                 .enumerate()
                 .map(|(k, c)| {
-                    draw::choice_panel(
-                        format!("contour {}: {}", k + 1, c.search.choice.method.legend()),
+                    let choice = &c.search.choice;
+                    let mut panel = draw::choice_panel(
+                        format!("contour {}: {}", k + 1, choice.method.legend()),
                         &c.target,
-                        &c.search.choice,
-                    )
+                        choice,
+                    )?;
+                    // in % of the whole outline's size, as the table and the tolerance are
+                    // (the panel's own would be the contour's)
+                    panel.x_label = format!(
+                        "{} pts, error {:.2} % of the outline's size{}",
+                        choice.measure.counted,
+                        100.0 * choice.measure.distances.hausdorff() / found.size,
+                        if choice.within_tolerance {
+                            ""
+                        } else {
+                            " (over the tolerance)"
+                        }
+                    );
+                    Ok(panel)
                 })
                 .collect::<Result<Vec<_>>>()?;
             let n = panels.len();
