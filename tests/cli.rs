@@ -392,9 +392,9 @@ fn bad_input_files_fail_with_their_line_and_column_and_write_nothing() {
         ("c.csv", b"", &["fit", "--method", "linear"], "points"),
         (
             "d.svg",
-            b"<svg><path d='M 0 0 A 1 1 0 0 1 2 2'/></svg>",
+            b"<svg><path d='M 0 0 A 1 1 0 01 2 2 3'/></svg>",
             &["fewest"],
-            "arcs (A) are not supported",
+            "an arc flag is 0 or 1",
         ),
         (
             "e.path",

@@ -253,8 +253,9 @@ mod svg {
     fn bad_paths_name_the_command_at_fault() {
         assert_eq!(where_("L 1 1").1, 1);
         assert_eq!(where_("M 0 0 L 1").1, 7);
-        assert_eq!(where_("M 0 0 A 1 1 0 0 1 2 2").1, 7);
-        assert_eq!(where_("M 0 0 S 1 1 2 2").1, 7);
+        assert_eq!(where_("M 0 0 A 1 1 0 0 1 2").1, 7);
+        assert_eq!(where_("M 0 0 S 1 1 2").1, 7);
+        assert_eq!(where_("M 0 0 T 1").1, 7);
         assert_eq!(where_("M 0 0 X 1 1").1, 7);
         assert_eq!(where_("M 0 0 L 1e999 0").1, 9);
         assert_eq!(where_("M 0 0 L 1 # 2").1, 11);
@@ -282,6 +283,173 @@ mod svg {
                 }
                 Err(Error::TooLarge { .. }) => {}
                 Err(e) => prop_assert!(false, "unexpected {e}"),
+            }
+        }
+    }
+}
+
+mod smooth_curves_and_arcs {
+    use nalgebra::Vector2;
+    use splinelab::input::contours_from_svg_path;
+    use splinelab::metrics::curve::segment_distance;
+
+    fn points(d: &str, tol: f64) -> Vec<Vector2<f64>> {
+        let c = contours_from_svg_path(d, tol).unwrap();
+        c.into_iter().flat_map(|c| c.points).collect()
+    }
+
+    #[test]
+    fn smooth_curves_reflect_the_previous_control_point() {
+        // S after C: its first control point is the reflection of C's second about C's end
+        assert_eq!(
+            points("M 0 0 C 1 2 3 2 4 0 S 7 -2 8 0", 1e-4),
+            points("M 0 0 C 1 2 3 2 4 0 C 5 -2 7 -2 8 0", 1e-4)
+        );
+        assert_eq!(
+            points("m 0 0 c 1 2 3 2 4 0 s 3 -2 4 0", 1e-4),
+            points("M 0 0 C 1 2 3 2 4 0 C 5 -2 7 -2 8 0", 1e-4)
+        );
+        // S after a line: its first control point is the current point
+        assert_eq!(
+            points("M 0 0 L 1 0 S 2 2 3 0", 1e-4),
+            points("M 0 0 L 1 0 C 1 0 2 2 3 0", 1e-4)
+        );
+        // T after Q (and after T), and T after a line
+        assert_eq!(
+            points("M 0 0 Q 1 2 2 0 T 4 0 T 6 0", 1e-4),
+            points("M 0 0 Q 1 2 2 0 Q 3 -2 4 0 Q 5 2 6 0", 1e-4)
+        );
+        assert_eq!(
+            points("M 0 0 L 1 1 T 3 1", 1e-4),
+            points("M 0 0 L 1 1 Q 1 1 3 1", 1e-4)
+        );
+        // S after Q does not reflect Q's control point
+        assert_eq!(
+            points("M 0 0 Q 1 2 2 0 S 3 1 4 0", 1e-4),
+            points("M 0 0 Q 1 2 2 0 C 2 0 3 1 4 0", 1e-4)
+        );
+    }
+
+    #[test]
+    fn arcs_lie_on_their_ellipse_within_the_tolerance() {
+        for tol in [1e-2, 1e-4, 1e-7] {
+            // a half circle about (1, 0), on the side of the sweep
+            for (sweep, side) in [(1, -1.0), (0, 1.0)] {
+                let p = points(&format!("M 0 0 A 1 1 0 0 {sweep} 2 0"), tol);
+                assert_eq!(p[0], Vector2::new(0.0, 0.0));
+                assert_eq!(*p.last().unwrap(), Vector2::new(2.0, 0.0));
+                for q in &p {
+                    assert!(((q.x - 1.0).hypot(q.y) - 1.0).abs() < 1e-12);
+                    assert!(q.y * side >= -1e-15, "sweep {sweep}: {q:?}");
+                }
+                // every chord within the tolerance of the circle: its midpoint's depth
+                for w in p.windows(2) {
+                    let m = (w[0] + w[1]) * 0.5;
+                    assert!(1.0 - (m.x - 1.0).hypot(m.y) <= tol * (1.0 + 1e-9));
+                }
+            }
+        }
+        // a rotated ellipse (radii 3 and 1, 30°): every vertex on it, in its own axes
+        let (a, b, phi) = (3.0, 1.0, 30f64.to_radians());
+        let p = points("M 0 0 A 3 1 30 1 1 2 1", 1e-6);
+        // the centre by the SVG specification's formulas (F.6.5), written out here
+        let centre = {
+            let (s, c) = phi.sin_cos();
+            let h = (Vector2::new(0.0, 0.0) - Vector2::new(2.0, 1.0)) * 0.5;
+            let q = Vector2::new(c * h.x + s * h.y, -s * h.x + c * h.y);
+            let num = a * a * b * b - a * a * q.y * q.y - b * b * q.x * q.x;
+            let den = a * a * q.y * q.y + b * b * q.x * q.x;
+            let root = -(num / den).sqrt(); // large = sweep: the root's sign is −
+            let cc = Vector2::new(root * a * q.y / b, -root * b * q.x / a);
+            Vector2::new(c * cc.x - s * cc.y, s * cc.x + c * cc.y) + Vector2::new(1.0, 0.5)
+        };
+        let (s, c) = phi.sin_cos();
+        for q in &p {
+            let d = q - centre;
+            let u = Vector2::new(c * d.x + s * d.y, -s * d.x + c * d.y);
+            assert!(
+                ((u.x / a).powi(2) + (u.y / b).powi(2) - 1.0).abs() < 1e-12,
+                "{q:?}"
+            );
+        }
+        // the large arc is the longer way round
+        let small = points("M 0 0 A 3 1 30 0 1 2 1", 1e-6);
+        let length = |p: &[Vector2<f64>]| p.windows(2).map(|w| (w[1] - w[0]).norm()).sum::<f64>();
+        assert!(length(&p) > length(&small));
+    }
+
+    #[test]
+    fn arcs_take_the_corrections_of_the_svg_specification() {
+        // radii too small for the endpoints are scaled up: a half circle of radius 1
+        let p = points("M 0 0 A 0.1 0.1 0 0 1 2 0", 1e-6);
+        assert!(p
+            .iter()
+            .all(|q| ((q.x - 1.0).hypot(q.y) - 1.0).abs() < 1e-12));
+        assert!(p.len() > 10);
+        // a zero radius draws a line; equal endpoints draw nothing
+        assert_eq!(
+            points("M 0 0 A 0 1 0 0 1 2 0", 1e-6),
+            vec![Vector2::new(0.0, 0.0), Vector2::new(2.0, 0.0)]
+        );
+        assert_eq!(
+            points("M 0 0 A 1 1 0 0 1 0 0", 1e-6),
+            vec![Vector2::new(0.0, 0.0)]
+        );
+        // negative radii are their absolute values; relative arcs are the absolute ones
+        assert_eq!(
+            points("M 0 0 A -1 -1 0 0 1 2 0", 1e-6),
+            points("M 0 0 A 1 1 0 0 1 2 0", 1e-6)
+        );
+        assert_eq!(
+            points("M 1 1 a 1 1 0 0 1 2 0", 1e-6),
+            points("M 1 1 A 1 1 0 0 1 3 1", 1e-6)
+        );
+        // a flattened arc is within the tolerance of a dense one, chord by chord
+        let coarse = points("M 0 0 A 2 1 10 1 0 3 2", 1e-3);
+        let dense = points("M 0 0 A 2 1 10 1 0 3 2", 1e-9);
+        for q in &dense {
+            let d = coarse
+                .windows(2)
+                .map(|w| segment_distance(*q, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
+            assert!(d <= 1e-3 * (1.0 + 1e-6), "{d}");
+        }
+    }
+
+    fn where_flag(d: &str) -> (usize, usize, String) {
+        match contours_from_svg_path(d, 1e-3) {
+            Err(splinelab::Error::Parse {
+                line,
+                column,
+                message,
+                ..
+            }) => (line, column, message),
+            other => panic!("{d}: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn packed_or_bad_arc_flags_are_refused_at_the_flag() {
+        // packed flags read as one number: too few numbers for the arc
+        let (_, column, message) = where_flag("M 0 0 A 1 1 0 01 2 2");
+        assert_eq!(column, 7);
+        assert!(message.contains("needs 7 numbers"), "{message}");
+        for (d, column) in [
+            ("M 0 0 A 1 1 0 01 2 2 3", 15),
+            ("M 0 0 A 1 1 0 0 2 2 2", 17),
+            ("M 0 0 a 1 1 0 1.0 0 2 2", 15),
+        ] {
+            match contours_from_svg_path(d, 1e-3) {
+                Err(splinelab::Error::Parse {
+                    line: 1,
+                    column: c,
+                    message,
+                    ..
+                }) => {
+                    assert_eq!(c, column, "{d}: {message}");
+                    assert!(message.contains("arc flag"), "{message}");
+                }
+                other => panic!("{d}: {other:?}"),
             }
         }
     }

@@ -1,18 +1,23 @@
 //! Points from SVG path data (the `d` attribute): an outline drawn in a drawing program, as
 //! dense polylines.
 //!
-//! - **Commands**: `M L H V C Q Z`, absolute (upper case) and relative (lower case); after a
-//!   move, further coordinate pairs are lines (the SVG rule); a command letter may be left out
-//!   when it repeats. Numbers follow SVG's grammar (`-1.5e-3`, `.5.5` is two numbers),
-//!   separated by blanks or commas.
-//! - **Flattening**: a line is its end point; a cubic (`C`) or quadratic (`Q`) Bézier is halved
-//!   (de Casteljau) until its control points lie within `tolerance` of the chord, so the
-//!   polyline is within `tolerance` of the curve; each flattened piece has at most
-//!   [`MAX_PIECES_PER_CURVE`] segments.
+//! - **Commands**: every command of SVG 1.1 paths — `M L H V C S Q T A Z`, absolute (upper
+//!   case) and relative (lower case); after a move, further coordinate pairs are lines (the
+//!   SVG rule); a command letter may be left out when it repeats; `S` and `T` reflect the
+//!   previous curve's last control point (or start at the current point after another
+//!   command). Numbers follow SVG's grammar (`-1.5e-3`, `.5.5` is two numbers), separated by
+//!   blanks or commas; an arc's flags are `0` or `1` written apart.
+//! - **Flattening**: a line is its end point; a cubic (`C`, `S`) or quadratic (`Q`, `T`)
+//!   Bézier is halved (de Casteljau) until its control points lie within `tolerance` of the
+//!   chord, so the polyline is within `tolerance` of the curve; an arc (`A`, SVG's endpoint
+//!   form with its corrections: zero radii draw a line, radii too small are scaled up) is cut
+//!   at equal steps of the ellipse's angle small enough that every chord is within
+//!   `tolerance` of it; each flattened piece has at most [`MAX_PIECES_PER_CURVE`] segments.
 //! - **Contours**: each `M` starts one; `Z` closes it (its first point repeated at its end).
 //! - **Refused** with [`Error::Parse`] (line and column of the command or number at fault): an
-//!   unknown or unsupported command (`S`, `T`, `A`: convert them to `C`, `Q` first), a command
-//!   without its numbers, a number that is not finite, data before the first `M`.
+//!   unknown command, a command without its numbers, a number that is not finite, an arc flag
+//!   that is not `0` or `1` (flags packed as `01` are refused, not misread), data before the
+//!   first `M`.
 
 use crate::bezier::de_casteljau::de_casteljau_levels;
 use crate::error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
@@ -41,8 +46,11 @@ const WHAT: &str = "SVG path";
 /// let c = contours_from_svg_path("M 0 0 L 10 0 q 5 5 0 10 Z", 0.01)?;
 /// assert_eq!(c.len(), 1);
 /// assert!(c[0].closed);
-/// let err = contours_from_svg_path("M 0 0 A 1 1 0 0 1 2 2", 0.01).unwrap_err();
-/// assert_eq!(err.to_string(), "SVG path, line 1, column 7: arcs (A) are not supported: convert them to C or Q first");
+/// // a half circle of radius 1 about (1, 0)
+/// let arc = contours_from_svg_path("M 0 0 A 1 1 0 0 1 2 0", 1e-6)?;
+/// assert!(arc[0].points.iter().all(|p| ((p.x - 1.0).hypot(p.y) - 1.0).abs() < 1e-12));
+/// let err = contours_from_svg_path("M 0 0 X 1 1", 0.01).unwrap_err();
+/// assert_eq!(err.to_string(), "SVG path, line 1, column 7: unknown command 'X'");
 /// # Ok::<(), splinelab::Error>(())
 /// ```
 ///
@@ -58,6 +66,9 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
     let mut total = 0usize;
     let mut k = 0;
     let mut command: Option<(char, usize)> = None;
+    // the previous command's last control point, for S (after C or S) and T (after Q or T)
+    let mut cubic_control: Option<Vector2<f64>> = None;
+    let mut quadratic_control: Option<Vector2<f64>> = None;
     while k < tokens.len() {
         let (c, at) = match tokens[k] {
             Token::Command(c, at) => {
@@ -104,6 +115,7 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
             return Err(parse_error(d, at, format!("{c} before the first M")));
         }
         let mut new_points: Vec<Vector2<f64>> = Vec::new();
+        let (mut next_cubic, mut next_quadratic) = (None, None);
         match c.to_ascii_uppercase() {
             'M' => {
                 let v = take(2)?;
@@ -129,21 +141,33 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
                 pos.y = if relative { pos.y + v[0] } else { v[0] };
                 new_points.push(pos);
             }
-            'C' => {
-                let v = take(6)?;
+            'C' | 'S' => {
+                let (first, v) = if c.eq_ignore_ascii_case(&'C') {
+                    let v = take(6)?;
+                    (base + Vector2::new(v[0], v[1]), v[2..].to_vec())
+                } else {
+                    // the reflection of the previous cubic's second control point, or the
+                    // current point
+                    (cubic_control.map_or(pos, |q| pos * 2.0 - q), take(4)?)
+                };
                 let p = [
                     pos,
+                    first,
                     base + Vector2::new(v[0], v[1]),
                     base + Vector2::new(v[2], v[3]),
-                    base + Vector2::new(v[4], v[5]),
                 ];
                 flatten(&p, tolerance, &mut new_points);
                 pos = p[3];
+                next_cubic = Some(p[2]);
             }
-            'Q' => {
-                let v = take(4)?;
-                let q = base + Vector2::new(v[0], v[1]);
-                let e = base + Vector2::new(v[2], v[3]);
+            'Q' | 'T' => {
+                let (q, v) = if c.eq_ignore_ascii_case(&'Q') {
+                    let v = take(4)?;
+                    (base + Vector2::new(v[0], v[1]), v[2..].to_vec())
+                } else {
+                    (quadratic_control.map_or(pos, |q| pos * 2.0 - q), take(2)?)
+                };
+                let e = base + Vector2::new(v[0], v[1]);
                 // the quadratic as a cubic (degree elevation, exact)
                 let p = [
                     pos,
@@ -153,6 +177,43 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
                 ];
                 flatten(&p, tolerance, &mut new_points);
                 pos = e;
+                next_quadratic = Some(q);
+            }
+            'A' => {
+                let v = take(7)?;
+                // the seven numbers are the tokens just taken
+                let first = k - 7;
+                // a flag is one digit, 0 or 1 (flags packed as `01` are refused, not misread)
+                let flag = |index: usize| -> Result<bool> {
+                    let Some(&Token::Number(_, a)) = tokens.get(index) else {
+                        return Err(parse_error(d, at, "an arc without its flags".into()));
+                    };
+                    let text: String = d[a..]
+                        .chars()
+                        .take_while(|ch| {
+                            ch.is_ascii_digit() || matches!(ch, '.' | 'e' | 'E' | '+' | '-')
+                        })
+                        .collect();
+                    match text.as_str() {
+                        "0" => Ok(false),
+                        "1" => Ok(true),
+                        _ => Err(parse_error(
+                            d,
+                            a,
+                            format!("an arc flag is 0 or 1, found {text:?} (packed flags such as 01 are not read: separate them)"),
+                        )),
+                    }
+                };
+                let (large, sweep) = (flag(first + 3)?, flag(first + 4)?);
+                let end = base + Vector2::new(v[5], v[6]);
+                let arc = Arc {
+                    radii: Vector2::new(v[0], v[1]),
+                    rotation: v[2].to_radians(),
+                    large,
+                    sweep,
+                };
+                arc.flatten(pos, end, tolerance, &mut new_points);
+                pos = end;
             }
             'Z' => {
                 if let Some(last) = out.last_mut() {
@@ -165,22 +226,9 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
                 }
                 pos = start;
             }
-            'S' | 'T' => {
-                return Err(parse_error(
-                    d,
-                    at,
-                    format!("smooth curves ({c}) are not supported: write them as C or Q"),
-                ))
-            }
-            'A' => {
-                return Err(parse_error(
-                    d,
-                    at,
-                    format!("arcs ({c}) are not supported: convert them to C or Q first"),
-                ))
-            }
             _ => return Err(parse_error(d, at, format!("unknown command {c:?}"))),
         }
+        (cubic_control, quadratic_control) = (next_cubic, next_quadratic);
         if let Some(bad) = new_points
             .iter()
             .chain(std::iter::once(&pos))
@@ -224,6 +272,87 @@ pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
 /// point of each level, the right half the last, from the bottom up) until both inner
 /// control points lie within `tolerance` of the chord — then the curve, inside their convex
 /// hull, does too.
+/// An elliptical arc's shape: the SVG `A` command's radii, `x`-axis rotation and flags.
+struct Arc {
+    radii: Vector2<f64>,
+    rotation: f64,
+    large: bool,
+    sweep: bool,
+}
+
+impl Arc {
+    /// The arc from `from` to `to` (SVG's endpoint parametrisation, with its corrections:
+    /// zero radii draw a line, radii too small for the endpoints are scaled up, equal
+    /// endpoints draw nothing) as points after `from` at equal steps of the ellipse's angle,
+    /// the step small enough that every chord lies within `tolerance` of the arc (the sagitta
+    /// of the circle of the larger radius bounds the ellipse's, an affine image of it shrunk in
+    /// one direction), at most [`MAX_PIECES_PER_CURVE`] chords.
+    fn flatten(
+        &self,
+        from: Vector2<f64>,
+        to: Vector2<f64>,
+        tolerance: f64,
+        out: &mut Vec<Vector2<f64>>,
+    ) {
+        let (mut rx, mut ry) = (self.radii.x.abs(), self.radii.y.abs());
+        if from == to {
+            return;
+        }
+        if !(rx > 0.0 && ry > 0.0 && rx.is_finite() && ry.is_finite()) {
+            out.push(to);
+            return;
+        }
+        let (sin, cos) = self.rotation.sin_cos();
+        // the endpoints in the ellipse's axes, about their midpoint
+        let h = (from - to) * 0.5;
+        let p = Vector2::new(cos * h.x + sin * h.y, -sin * h.x + cos * h.y);
+        let lambda = (p.x / rx).powi(2) + (p.y / ry).powi(2);
+        if lambda > 1.0 {
+            let grow = lambda.sqrt();
+            rx *= grow;
+            ry *= grow;
+        }
+        let (rx2, ry2, px2, py2) = (rx * rx, ry * ry, p.x * p.x, p.y * p.y);
+        let num = rx2 * ry2 - rx2 * py2 - ry2 * px2;
+        let den = rx2 * py2 + ry2 * px2;
+        let mut root = if den > 0.0 {
+            (num / den).max(0.0).sqrt()
+        } else {
+            0.0
+        };
+        if self.large == self.sweep {
+            root = -root;
+        }
+        let c = Vector2::new(root * rx * p.y / ry, -root * ry * p.x / rx);
+        let centre = Vector2::new(cos * c.x - sin * c.y, sin * c.x + cos * c.y) + (from + to) * 0.5;
+        let angle = |v: Vector2<f64>| v.y.atan2(v.x);
+        let start = angle(Vector2::new((p.x - c.x) / rx, (p.y - c.y) / ry));
+        let mut delta = angle(Vector2::new((-p.x - c.x) / rx, (-p.y - c.y) / ry)) - start;
+        let tau = std::f64::consts::TAU;
+        if self.sweep && delta < 0.0 {
+            delta += tau;
+        } else if !self.sweep && delta > 0.0 {
+            delta -= tau;
+        }
+        let r = rx.max(ry);
+        let step = 2.0 * (1.0 - tolerance / r).max(-1.0).acos();
+        let pieces = if step.is_finite() && step > 0.0 {
+            (delta.abs() / step)
+                .ceil()
+                .clamp(1.0, MAX_PIECES_PER_CURVE as f64) as usize
+        } else {
+            MAX_PIECES_PER_CURVE
+        };
+        for i in 1..pieces {
+            let t = start + delta * (i as f64 / pieces as f64);
+            let e = Vector2::new(rx * t.cos(), ry * t.sin());
+            out.push(Vector2::new(cos * e.x - sin * e.y, sin * e.x + cos * e.y) + centre);
+        }
+        // the end exactly
+        out.push(to);
+    }
+}
+
 fn flatten(p: &[Vector2<f64>; 4], tolerance: f64, out: &mut Vec<Vector2<f64>>) {
     let mut stack = vec![(*p, 0usize)];
     // depth 16 gives at most MAX_PIECES_PER_CURVE pieces

@@ -101,12 +101,41 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::Parse { .. }
             )
         }),
+        case("input::svg_arcs_at_extremes", || {
+            use splinelab::input::contours_from_svg_path;
+            // radii from tiny to huge, NaN-free: a finite polyline or a typed error, bounded
+            for r in ["1e-300", "1e300", "0", "-3", "1e-320"] {
+                for tol in [1e-12, 1e-3, 1e3] {
+                    let d = format!("M 0 0 A {r} {r} 30 1 0 5 5 Z");
+                    if let Ok(c) = contours_from_svg_path(&d, tol) {
+                        ensure!(
+                            c.iter()
+                                .flat_map(|c| c.points.iter())
+                                .all(|p| p.iter().all(|v| v.is_finite())),
+                            "{d}: a non-finite point"
+                        );
+                        ensure!(
+                            c[0].points.len()
+                                <= 2 * splinelab::input::svg_path::MAX_PIECES_PER_CURVE + 4,
+                            "{d}: {} points",
+                            c[0].points.len()
+                        );
+                    }
+                }
+            }
+            Ok(())
+        }),
         case("input::svg_path_refusals", || {
             use splinelab::input::contours_from_svg_path;
             for d in [
                 "M 0",
                 "L 1 1",
-                "M 0 0 A 1 1 0 0 1 2 2",
+                "M 0 0 A 1 1 0 01 2 2",
+                "M 0 0 A 1 1 0 2 1 2 2",
+                "M 0 0 A 1 1 0 0.5 1 2 2",
+                "M 0 0 A 1 1 0 0 1 2",
+                "M 0 0 S 1 1",
+                "M 0 0 T",
                 "M 0 0 X",
                 "M 0 0 L 1e999 0",
                 "M\u{0}",
@@ -236,8 +265,8 @@ fn report_cases() -> Vec<Case> {
                 "<svg/>",
                 "<svg><path/></svg>",
                 "<svg><path d=M0,0/></svg>",
-                "<svg><path d='M 0 0 S 1 1 2 2'/></svg>",
-                "<svg><path d='M 0 0 T 1 1'/></svg>",
+                "<svg><path d='M 0 0 S 1 1 2'/></svg>",
+                "<svg><path d='M 0 0 A 1 1 0 1e0 1 2 2'/></svg>",
                 "<svg><path d='Z'/></svg>",
                 "<svg><path d=\"M 0 0 L 1e400 0\"/></svg>",
                 "<",
