@@ -255,13 +255,7 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
     let name = stem(&args.points);
     // everything is computed before anything is written
     let csv = fit.samples_csv(args.samples)?;
-    let size = splinelab::report::user::outline::size(&[splinelab::input::Contour {
-        points: fit.drawn_points(),
-        closed: false,
-    }]);
-    let tolerance = args.tolerance.unwrap_or(1e-4 * size.max(f64::MIN_POSITIVE));
-    let segments = fit.bezier(tolerance)?;
-    let svg = export::svg_document(&segments, 2e-3 * size.max(f64::MIN_POSITIVE));
+    let svg = fit.svg_document(args.tolerance)?;
     let formulas = match args.formulas {
         Some(FormulaName::Plain) => Some(fit.formulas(FormulaStyle::Plain)?),
         Some(FormulaName::Latex) => Some(fit.formulas(FormulaStyle::Latex)?),

@@ -138,6 +138,22 @@ impl Fit {
         Ok(cubic_segments(&self.curve, tolerance)?)
     }
 
+    /// The curve as a standalone SVG document of cubic Béziers ([`Fit::bezier`] within
+    /// `tolerance`, by default 10⁻⁴ of the size of the points' bounding box;
+    /// [`crate::report::export::svg_document`] with a stroke of 2·10⁻³ of that size).
+    ///
+    /// # Errors
+    /// As [`Fit::bezier`].
+    pub fn svg_document(&self, tolerance: Option<f64>) -> Result<String> {
+        let size = super::outline::size(&[crate::input::Contour {
+            points: self.drawn_points(),
+            closed: false,
+        }])
+        .max(f64::MIN_POSITIVE);
+        let segments = self.bezier(tolerance.unwrap_or(1e-4 * size))?;
+        Ok(crate::report::export::svg_document(&segments, 2e-3 * size))
+    }
+
     /// The curve over its points (a B-spline's control polygon drawn), titled with the method.
     ///
     /// # Errors
