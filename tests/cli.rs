@@ -392,9 +392,9 @@ fn bad_input_files_fail_with_their_line_and_column_and_write_nothing() {
         ("c.csv", b"", &["fit", "--method", "linear"], "points"),
         (
             "d.svg",
-            b"<svg><path d='M 0 0 A 1 1 0 01 2 2 3'/></svg>",
+            b"<svg xmlns='http://www.w3.org/2000/svg'>\n<path d='M 0 0 A 1 1 0 2 1 2 2'/></svg>",
             &["fewest"],
-            "an arc flag is 0 or 1",
+            "line 2, column 24: cannot read \"2\" here (a number, or an arc flag 0 or 1, is expected)",
         ),
         (
             "e.path",

@@ -250,24 +250,40 @@ mod svg {
     }
 
     #[test]
-    fn bad_paths_name_the_command_at_fault() {
-        assert_eq!(where_("L 1 1").1, 1);
-        assert_eq!(where_("M 0 0 L 1").1, 7);
-        assert_eq!(where_("M 0 0 A 1 1 0 0 1 2").1, 7);
-        assert_eq!(where_("M 0 0 S 1 1 2").1, 7);
-        assert_eq!(where_("M 0 0 T 1").1, 7);
-        assert_eq!(where_("M 0 0 X 1 1").1, 7);
-        assert_eq!(where_("M 0 0 L 1e999 0").1, 9);
-        assert_eq!(where_("M 0 0 L 1 # 2").1, 11);
-        assert_eq!(where_("M 0").1, 1);
-        assert_eq!(where_("M 0 0\nL 1").0, 2);
-        assert_eq!(where_("M 0 0 L 1.7e308 0").1, 7);
-        assert_eq!(where_("M 0 0 L 2e306 0 l 2e306 0").1, 17);
+    fn bad_paths_name_the_place_the_grammar_stops() {
+        // (data, column, words of the message)
+        for (d, column, words) in [
+            ("L 1 1", 1, "starts with a move"),
+            ("  5 5", 3, "starts with a move"),
+            ("M 0 0 L 1", 10, "L is short of numbers"),
+            ("M 0 0 A 1 1 0 0 1 2", 20, "A is short of numbers"),
+            ("M 0 0 S 1 1 2", 14, "S is short of numbers"),
+            ("M 0 0 T 1 L 2 2", 11, "T is short of numbers before 'L'"),
+            ("M 0 0 X 1 1", 7, "cannot read 'X'"),
+            ("M 0 0 L 1e999 0", 9, "not a finite number: \"1e999\""),
+            ("M 0 0 L 1 # 2", 11, "cannot read \"#\""),
+            ("M 0", 4, "M is short of numbers"),
+            ("M 0 0 Z 1 2", 9, "a number after Z"),
+            // a point beyond the largest coordinate: at the command that draws it
+            ("M 0 0 L 1.7e308 0", 7, "beyond the largest coordinate"),
+            (
+                "M 0 0 L 2e306 0 l 2e306 0",
+                17,
+                "beyond the largest coordinate",
+            ),
+        ] {
+            let (line, c, message) = where_(d);
+            assert_eq!((line, c), (1, column), "{d}: {message}");
+            assert!(message.contains(words), "{d}: {message}");
+        }
+        assert_eq!(where_("M 0 0\nL 1"), (2, 4, "L is short of numbers".into()));
         assert!(matches!(
             contours_from_svg_path("M 0 0 L 1 1", 0.0),
             Err(Error::NotPositive { .. })
         ));
         assert_eq!(contours_from_svg_path("", 1e-3).unwrap(), []);
+        // a lone move draws nothing
+        assert_eq!(contours_from_svg_path("M 1 1 M 2 2", 1e-3).unwrap(), []);
     }
 
     proptest! {
@@ -391,10 +407,7 @@ mod smooth_curves_and_arcs {
             points("M 0 0 A 0 1 0 0 1 2 0", 1e-6),
             vec![Vector2::new(0.0, 0.0), Vector2::new(2.0, 0.0)]
         );
-        assert_eq!(
-            points("M 0 0 A 1 1 0 0 1 0 0", 1e-6),
-            vec![Vector2::new(0.0, 0.0)]
-        );
+        assert!(points("M 0 0 A 1 1 0 0 1 0 0", 1e-6).is_empty());
         // negative radii are their absolute values; relative arcs are the absolute ones
         assert_eq!(
             points("M 0 0 A -1 -1 0 0 1 2 0", 1e-6),
@@ -416,28 +429,27 @@ mod smooth_curves_and_arcs {
         }
     }
 
-    fn where_flag(d: &str) -> (usize, usize, String) {
-        match contours_from_svg_path(d, 1e-3) {
-            Err(splinelab::Error::Parse {
-                line,
-                column,
-                message,
-                ..
-            }) => (line, column, message),
-            other => panic!("{d}: {other:?}"),
-        }
-    }
-
     #[test]
-    fn packed_or_bad_arc_flags_are_refused_at_the_flag() {
-        // packed flags read as one number: too few numbers for the arc
-        let (_, column, message) = where_flag("M 0 0 A 1 1 0 01 2 2");
-        assert_eq!(column, 7);
-        assert!(message.contains("needs 7 numbers"), "{message}");
+    fn arc_flags_follow_the_svg_grammar() {
+        // flags are single digits: packed with each other or with the next number, as
+        // minifiers write them, they read as the separated forms
+        for (packed, separate) in [
+            ("M 0 0 A 1 1 0 01 2 2", "M 0 0 A 1 1 0 0 1 2 2"),
+            ("M0 0a1 1 0 00-.5.5", "M 0 0 a 1 1 0 0 0 -0.5 0.5"),
+            ("M0 0a.5.5 0 0 0-1 0", "M 0 0 a 0.5 0.5 0 0 0 -1 0"),
+            ("M0 0a6 6 0 10-6 6", "M 0 0 a 6 6 0 1 0 -6 6"),
+            (
+                "M0 0a.18.18 0 00.29.15",
+                "M 0 0 a 0.18 0.18 0 0 0 0.29 0.15",
+            ),
+        ] {
+            assert_eq!(points(packed, 1e-6), points(separate, 1e-6), "{packed}");
+        }
+        // a flag that is not 0 or 1 is refused at the flag
         for (d, column) in [
-            ("M 0 0 A 1 1 0 01 2 2 3", 15),
+            ("M 0 0 A 1 1 0 2 1 2 2", 15),
             ("M 0 0 A 1 1 0 0 2 2 2", 17),
-            ("M 0 0 a 1 1 0 1.0 0 2 2", 15),
+            ("M 0 0 a 1 1 0 .5 0 2 2", 15),
         ] {
             match contours_from_svg_path(d, 1e-3) {
                 Err(splinelab::Error::Parse {
@@ -447,7 +459,7 @@ mod smooth_curves_and_arcs {
                     ..
                 }) => {
                     assert_eq!(c, column, "{d}: {message}");
-                    assert!(message.contains("arc flag"), "{message}");
+                    assert!(message.contains("arc flag 0 or 1"), "{message}");
                 }
                 other => panic!("{d}: {other:?}"),
             }

@@ -411,7 +411,7 @@ fn outlines_are_read_by_their_file_kind() {
     let svg = write_temp(
         dir.path(),
         "a.svg",
-        b"<svg><!-- <path d='M 9 9'/> --><path id='p' d='M 0 0 L 10 0 L 10 5 Z'/></svg>",
+        b"<svg xmlns='http://www.w3.org/2000/svg'><!-- <path d='M 9 9 H 1'/> --><path id='p' d='M 0 0 L 10 0 L 10 5 Z'/></svg>",
     );
     let c = read_outline(&svg, &ReadOptions::default()).unwrap();
     assert_eq!(c.len(), 1, "the comment's path is not read");
@@ -438,15 +438,23 @@ fn outlines_are_read_by_their_file_kind() {
     let bad = write_temp(
         dir.path(),
         "b.svg",
-        b"<svg>\n  <path d='M 0 0 L 1 x'/>\n</svg>",
+        b"<svg xmlns='http://www.w3.org/2000/svg'>\n  <path d='M 0 0 L 1 x'/>\n</svg>",
     );
     let err = read_outline(&bad, &ReadOptions::default())
         .unwrap_err()
         .to_string();
     assert!(err.contains("line 2, column"), "{err}");
-    let none = write_temp(dir.path(), "c.svg", b"<svg><rect/></svg>");
+    let none = write_temp(
+        dir.path(),
+        "c.svg",
+        b"<svg xmlns='http://www.w3.org/2000/svg'><rect/></svg>",
+    );
     assert!(read_outline(&none, &ReadOptions::default()).is_err());
-    let unterminated = write_temp(dir.path(), "d.svg", b"<svg><path d='M 0 0 L 1 1");
+    let unterminated = write_temp(
+        dir.path(),
+        "d.svg",
+        b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M 0 0 L 1 1",
+    );
     assert!(read_outline(&unterminated, &ReadOptions::default()).is_err());
     let binary = write_temp(dir.path(), "e.csv", &[0xff, 0xfe, 0, 1, 2]);
     let err = read_outline(&binary, &ReadOptions::default())

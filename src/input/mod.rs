@@ -1,9 +1,19 @@
-//! Users' data in: points from text — CSV ([`csv`]) and SVG path data ([`svg_path`]). Every reader takes the text (reading the
-//! file is the caller's), refuses what it cannot read with [`crate::Error::Parse`] naming the
-//! line and column at fault, and returns nothing half-read.
+//! Users' data in: points from CSV ([`csv`]), outlines from SVG path data ([`svg_path`]) and
+//! SVG documents (`svg_document`, feature `svg`), drawn as polylines within a stated distance
+//! ([`flatten`]). Every reader takes the text (reading the file is the caller's), refuses what
+//! it cannot read with [`crate::Error::Parse`] naming the line and column at fault, and returns
+//! nothing half-read.
 
+#[cfg(feature = "svg")]
+mod clip;
 pub mod csv;
+pub mod flatten;
+#[cfg(feature = "svg")]
+pub mod svg_document;
 pub mod svg_path;
 
 pub use csv::{points_from_csv, Columns};
-pub use svg_path::{contours_from_svg_document, contours_from_svg_path, Contour};
+pub use flatten::{Contour, SvgArc};
+#[cfg(feature = "svg")]
+pub use svg_document::{contours_from_svg_document, drawn_paths, DrawnPath, FillRule, Stroke};
+pub use svg_path::contours_from_svg_path;

@@ -116,7 +116,7 @@ pub(super) fn cases() -> Vec<Case> {
                         );
                         ensure!(
                             c[0].points.len()
-                                <= 2 * splinelab::input::svg_path::MAX_PIECES_PER_CURVE + 4,
+                                <= 2 * splinelab::input::flatten::MAX_PIECES_PER_CURVE + 4,
                             "{d}: {} points",
                             c[0].points.len()
                         );
@@ -130,7 +130,7 @@ pub(super) fn cases() -> Vec<Case> {
             for d in [
                 "M 0",
                 "L 1 1",
-                "M 0 0 A 1 1 0 01 2 2",
+                "M 0 0 A 1 1 0 01 2",
                 "M 0 0 A 1 1 0 2 1 2 2",
                 "M 0 0 A 1 1 0 0.5 1 2 2",
                 "M 0 0 A 1 1 0 0 1 2",
@@ -199,12 +199,18 @@ fn report_cases() -> Vec<Case> {
                 ("ragged.csv", b"0,0\n1\n2,2\n".to_vec()),
                 ("garbage.csv", vec![0xde, 0xad, 0xbe, 0xef, 0, 0xff]),
                 ("empty.svg", Vec::new()),
-                ("unterminated.svg", b"<svg><path d='M 0 0 L 1 1".to_vec()),
+                (
+                    "unterminated.svg",
+                    b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M 0 0 L 1 1".to_vec(),
+                ),
                 (
                     "unterminated-tag.svg",
-                    b"<svg><path d='M 0 0 L 1 1'".to_vec(),
+                    b"<svg xmlns='http://www.w3.org/2000/svg'><path d='M 0 0 L 1 1'".to_vec(),
                 ),
-                ("no-d.svg", b"<svg><path fill='none'/></svg>".to_vec()),
+                (
+                    "no-d.svg",
+                    b"<svg xmlns='http://www.w3.org/2000/svg'><path fill='none'/></svg>".to_vec(),
+                ),
                 ("unknown.path", b"M 0 0 L 1 1 W 2 2".to_vec()),
                 ("short.path", b"M 0 0 C 1 1 2".to_vec()),
                 ("garbage.svg", vec![0xff; 64]),
@@ -260,23 +266,55 @@ fn report_cases() -> Vec<Case> {
         }),
         case("user::svg_documents", || {
             use splinelab::input::contours_from_svg_document;
-            for doc in [
-                "",
-                "<svg/>",
-                "<svg><path/></svg>",
-                "<svg><path d=M0,0/></svg>",
-                "<svg><path d='M 0 0 S 1 1 2'/></svg>",
-                "<svg><path d='M 0 0 A 1 1 0 1e0 1 2 2'/></svg>",
-                "<svg><path d='Z'/></svg>",
-                "<svg><path d=\"M 0 0 L 1e400 0\"/></svg>",
-                "<",
-                "<path d='",
-                "<!-- <path d='M 0 0 L 1 1'/>",
-            ] {
-                ensure!(
-                    contours_from_svg_document(doc, 1e-3).is_err(),
-                    "{doc:?} was read"
-                );
+            const NS: &str = "xmlns='http://www.w3.org/2000/svg'";
+            // (document, words its refusal says)
+            let docs: Vec<(String, &str)> = vec![
+                ("".into(), "not well-formed XML"),
+                ("<".into(), "not well-formed XML"),
+                ("<path d='".into(), "not well-formed XML"),
+                ("<!-- <path d='M 0 0 L 1 1'/>".into(), "not well-formed XML"),
+                ("<svg><path d='M 0 0 L 1 1'/></svg>".into(), "not SVG's <svg>"),
+                (format!("<svg {NS}/>"), "draws nothing"),
+                (format!("<svg {NS}><path/></svg>"), "draws nothing"),
+                (format!("<svg {NS}><path d=M0,0/></svg>"), "not well-formed XML"),
+                (format!("<svg {NS}><path d='M 0 0 S 1 1 2'/></svg>"), "S is short"),
+                (format!("<svg {NS}><path d='M 0 0 A 1 1 0 1e0 1 2 2'/></svg>"), "cannot read 'e'"),
+                (format!("<svg {NS}><path d='Z'/></svg>"), "starts with a move"),
+                (format!("<svg {NS}><path d=\"M 0 0 L 1e400 0\"/></svg>"), "not a finite"),
+                (format!("<svg {NS}><text>a</text><rect width='1' height='1'/></svg>"), "<text>"),
+                (format!("<svg {NS}><image width='1' height='1'/></svg>"), "<image>"),
+                (format!("<svg {NS}><foreignObject/></svg>"), "<foreignObject>"),
+                (format!("<svg {NS}><rect width='1' height='1' transform='rotate(30'/></svg>"), "transform"),
+                (format!("<svg {NS}><polygon points='0 0 1 1 2'/></svg>"), "odd count"),
+                (format!("<svg {NS}><polygon points='0 0 1 x'/></svg>"), "cannot be read"),
+                (format!("<svg {NS}><rect width='1q' height='1'/></svg>"), "width"),
+                (
+                    format!("<svg {NS}><mask id='m'><rect width='1' height='1' fill='white'/></mask><rect width='2' height='2' mask='url(#m)'/></svg>"),
+                    "a mask",
+                ),
+                (
+                    format!("<svg {NS}><clipPath id='c'><circle r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
+                    "cuts the drawn outline",
+                ),
+                (format!("<svg {NS} width='0' height='1'><rect width='1' height='1'/></svg>"), ""),
+                (format!("<svg {NS} viewBox='-inf -inf inf inf'><rect width='1' height='1'/></svg>"), ""),
+                (format!("<svg {NS}><rect width='1e39' height='1'/></svg>"), ""),
+                (format!("<svg {NS}><path d='M 0 0 L 1e300 1'/></svg>"), ""),
+            ];
+            for (doc, words) in &docs {
+                match contours_from_svg_document(doc, 1e-3) {
+                    Ok(c) => {
+                        // read: finite points only
+                        ensure!(
+                            words.is_empty()
+                                && c.iter()
+                                    .flat_map(|c| c.points.iter())
+                                    .all(|p| p.iter().all(|v| v.is_finite())),
+                            "{doc:?} was read"
+                        );
+                    }
+                    Err(e) => ensure!(e.to_string().contains(words), "{doc:?}: {e}"),
+                }
             }
             Ok(())
         }),

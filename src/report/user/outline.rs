@@ -154,13 +154,7 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                 // the size from the path's end points (curves as chords), then the curves
                 None => FLATTEN_FRACTION * size(&parse(f64::MAX)?),
             };
-            let mut contours = parse(tolerance)?;
-            if kind == FileKind::Svg {
-                for p in contours.iter_mut().flat_map(|c| c.points.iter_mut()) {
-                    p.y = -p.y;
-                }
-            }
-            Ok(contours)
+            parse(tolerance)
         }
         FileKind::Font => {
             let ch = options.glyph.ok_or(crate::Error::Parse {

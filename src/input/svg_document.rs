@@ -1,0 +1,660 @@
+//! Outlines from SVG documents, as a viewer shows them (feature `svg`).
+//!
+//! The document is read by the resvg project's parser, [`usvg`] (XML by [`roxmltree`], CSS
+//! `style` attributes and `<style>` sheets, `transform`s, units `mm` `cm` `in` `pt` `pc` `%`
+//! at 96 px to the inch, `<use>` and `<symbol>`, nested `<svg>`, `<switch>`, markers, the
+//! basic shapes as paths, `display` and `visibility`). What it resolves to is read here:
+//!
+//! - **The outline** is the geometry of every path a viewer fills or strokes: a filled path's
+//!   contours are the boundary of its fill (an open subpath of a filled path is closed, as the
+//!   fill closes it); a path only stroked gives its **centre line** (the stroke's width is not
+//!   an outline). Paths with neither fill nor stroke, hidden ones (`visibility`, `display`),
+//!   those under a group of opacity 0 and whatever is not drawn where it stands (`<defs>`,
+//!   `<symbol>` until used, `<clipPath>`, `<mask>`, `<marker>` until placed, `<pattern>`
+//!   contents) are not outline.
+//! - **Coordinates**: the root `viewBox`'s user units (the document's own units when it has no
+//!   `viewBox`), `y` pointing **up** (SVG's `y` points down; the reader turns it so figures
+//!   are not upside down).
+//! - **Precision**: the parser holds the geometry in single precision (`f32`), about 6·10⁻⁸ of
+//!   the coordinates' size; it replaces arcs (`A`, `<circle>`, `<ellipse>`, rounded corners of
+//!   `<rect>`) by cubic Béziers, at least four to a full turn, which lie within
+//!   [`ARC_APPROXIMATION`] of the arc's larger radius of the exact ellipse (measured in the
+//!   tests), and at most 0.1 of the local units from it. The Béziers are flattened within the
+//!   tolerance given, after every transform, so each polyline lies within that tolerance of
+//!   the parser's curves.
+//! - **Refused** with [`Error::Parse`] at the line and column of the element: a `<text>`
+//!   (text is not read as an outline: convert it to paths in the drawing program, e.g.
+//!   Inkscape's *Path ▸ Object to Path*), an `<image>` or `<foreignObject>` (no outline), path
+//!   data, `points`, a `transform` or a shape's length that cannot be read (a viewer draws a
+//!   path up to its first error and skips a bad transform; a reader of outlines refuses
+//!   them), a `mask` on drawn content, a `clip-path` that cuts the drawn outline (a clip that
+//!   leaves every drawn point inside it changes nothing and is accepted), a document with
+//!   nothing drawn. Filters (blur, shadows) are not read: they change colours, not outlines.
+
+use super::flatten::{Contour, Flattener};
+use super::svg_path::{contours_from_svg_path, position};
+use crate::error::{Error, Result};
+use nalgebra::{Matrix2, Vector2};
+use std::str::FromStr;
+use usvg::roxmltree;
+
+/// The largest distance between the parser's cubic Béziers and the exact arc they replace,
+/// as a fraction of the arc's larger radius: `2.73·10⁻⁴`, the error of the classical
+/// four-cubics circle (kurbo's arc approximation, which the parser uses, takes at least four
+/// pieces to a full turn). Measured against the exact ellipse in `tests/svg_documents.rs`.
+pub const ARC_APPROXIMATION: f64 = 2.73e-4;
+
+const WHAT: &str = "SVG document";
+const SVG_NS: &str = "http://www.w3.org/2000/svg";
+
+/// How a drawn path is filled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FillRule {
+    /// SVG's `nonzero`.
+    NonZero,
+    /// SVG's `evenodd`.
+    EvenOdd,
+}
+
+/// How a stroke's ends are drawn (SVG's `stroke-linecap`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineCap {
+    /// `butt`.
+    Butt,
+    /// `round`.
+    Round,
+    /// `square`.
+    Square,
+}
+
+/// How a stroke's corners are drawn (SVG's `stroke-linejoin`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineJoin {
+    /// `miter`.
+    Miter,
+    /// `miter-clip`.
+    MiterClip,
+    /// `round`.
+    Round,
+    /// `bevel`.
+    Bevel,
+}
+
+/// A path's stroke, lengths in viewBox units (the transform's mean stretch `√|det|` applied).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stroke {
+    /// The width.
+    pub width: f64,
+    /// The ends.
+    pub cap: LineCap,
+    /// The corners.
+    pub join: LineJoin,
+    /// The miter limit (a ratio).
+    pub miter_limit: f64,
+    /// The dash pattern, if dashed.
+    pub dashes: Option<Vec<f64>>,
+}
+
+/// One path as a viewer draws it: its contours (viewBox units, `y` up), its fill rule if it
+/// is filled and its stroke if it is stroked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DrawnPath {
+    /// The element's `id` (empty if it has none).
+    pub id: String,
+    /// The flattened contours.
+    pub contours: Vec<Contour>,
+    /// The fill rule, if the path is filled.
+    pub fill: Option<FillRule>,
+    /// The stroke, if the path is stroked.
+    pub stroke: Option<Stroke>,
+}
+
+/// The outline of an SVG document: every drawn path's contours, in document order (module
+/// docs), flattened within `tolerance`.
+///
+/// ```
+/// use splinelab::input::svg_document::contours_from_svg_document;
+/// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">
+///   <g transform="translate(2 3)"><rect width="4" height="3"/></g>
+///   <rect width="10" height="10" fill="none"/>
+/// </svg>"#;
+/// let c = contours_from_svg_document(svg, 0.01)?;
+/// assert_eq!(c.len(), 1); // the invisible square is no outline
+/// assert!(c[0].closed);
+/// assert!(c[0].points.iter().any(|p| (p.x - 6.0).abs() < 1e-6 && (p.y + 6.0).abs() < 1e-6));
+/// let err = contours_from_svg_document("<svg xmlns='http://www.w3.org/2000/svg'>\n<path d='M 0 0 L 1'/></svg>", 0.01).unwrap_err();
+/// assert_eq!(err.to_string(), "SVG document, line 2, column 19: L is short of numbers");
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`drawn_paths`].
+pub fn contours_from_svg_document(text: &str, tolerance: f64) -> Result<Vec<Contour>> {
+    Ok(drawn_paths(text, tolerance)?
+        .into_iter()
+        .flat_map(|p| p.contours)
+        .collect())
+}
+
+/// Every path of an SVG document a viewer draws, with its fill and stroke (module docs),
+/// flattened within `tolerance`.
+///
+/// # Errors
+/// [`Error::NotPositive`] for a tolerance that is not positive and finite; [`Error::Parse`]
+/// at the document's line and column for XML that cannot be read and for what the module
+/// docs list; [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] points or the
+/// parser's element limit.
+pub fn drawn_paths(text: &str, tolerance: f64) -> Result<Vec<DrawnPath>> {
+    crate::error::positive("SVG flattening tolerance", tolerance)?;
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
+        let pos = e.pos();
+        Error::Parse {
+            what: WHAT,
+            line: pos.row as usize,
+            column: pos.col as usize,
+            message: format!("not well-formed XML: {e}"),
+        }
+    })?;
+    check_elements(&doc)?;
+    let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| match e {
+        usvg::Error::ElementsLimitReached => Error::TooLarge {
+            what: "SVG elements (with every <use> expanded)",
+            got: 1_000_001,
+            max: 1_000_000,
+        },
+        other => refuse_at(text, doc.root_element().range().start, other.to_string()),
+    })?;
+    let to_user = viewport_to_user(&doc, &tree).ok_or_else(|| {
+        refuse_at(
+            text,
+            doc.root_element().range().start,
+            "the viewBox or the document's size cannot be inverted".into(),
+        )
+    })?;
+    let mut reader = Reader {
+        text,
+        doc: &doc,
+        tolerance,
+        out: Vec::new(),
+    };
+    reader.group(tree.root(), &to_user)?;
+    if reader.out.iter().all(|p| p.contours.is_empty()) {
+        return Err(refuse_at(
+            text,
+            doc.root_element().range().start,
+            "the document draws nothing (no visible path, shape or use of one)".into(),
+        ));
+    }
+    Ok(reader.out)
+}
+
+/// An affine map `x ↦ m·x + t` in double precision.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Affine {
+    m: Matrix2<f64>,
+    t: Vector2<f64>,
+}
+
+impl Affine {
+    fn of(ts: usvg::Transform) -> Affine {
+        Affine {
+            m: Matrix2::new(
+                f64::from(ts.sx),
+                f64::from(ts.kx),
+                f64::from(ts.ky),
+                f64::from(ts.sy),
+            ),
+            t: Vector2::new(f64::from(ts.tx), f64::from(ts.ty)),
+        }
+    }
+
+    /// `self ∘ other`.
+    fn then_inner(&self, other: &Affine) -> Affine {
+        Affine {
+            m: self.m * other.m,
+            t: self.m * other.t + self.t,
+        }
+    }
+
+    fn apply(&self, p: usvg::tiny_skia_path::Point) -> Vector2<f64> {
+        self.m * Vector2::new(f64::from(p.x), f64::from(p.y)) + self.t
+    }
+
+    /// The mean stretch `√|det m|`.
+    fn mean_stretch(&self) -> f64 {
+        self.m.determinant().abs().sqrt()
+    }
+}
+
+/// The map from the parser's coordinates (the viewport's, with the root `viewBox` applied)
+/// back to the root `viewBox`'s user units, `y` turned up.
+fn viewport_to_user(doc: &roxmltree::Document, tree: &usvg::Tree) -> Option<Affine> {
+    let root = doc.root_element();
+    let size = tree.size();
+    let (w, h) = (f64::from(size.width()), f64::from(size.height()));
+    let view_box = root
+        .attribute("viewBox")
+        .and_then(|v| svgtypes::ViewBox::from_str(v).ok())
+        .filter(|v| v.w > 0.0 && v.h > 0.0 && v.w.is_finite() && v.h.is_finite());
+    let aspect = root
+        .attribute("preserveAspectRatio")
+        .and_then(|v| svgtypes::AspectRatio::from_str(v).ok())
+        .unwrap_or_default();
+    let (x, y, vw, vh) = match view_box {
+        Some(v) => (v.x, v.y, v.w, v.h),
+        None => (0.0, 0.0, w, h),
+    };
+    // the viewBox → viewport map, as SVG 1.1 §7.8 and the parser compute it (in f32 there)
+    let (mut sx, mut sy) = (w / vw, h / vh);
+    let (mut tx, mut ty) = (0.0, 0.0);
+    if aspect.align != svgtypes::Align::None {
+        let s = if aspect.slice { sx.max(sy) } else { sx.min(sy) };
+        (sx, sy) = (s, s);
+        let (free_x, free_y) = (w - vw * s, h - vh * s);
+        use svgtypes::Align::*;
+        tx = match aspect.align {
+            XMidYMin | XMidYMid | XMidYMax => free_x / 2.0,
+            XMaxYMin | XMaxYMid | XMaxYMax => free_x,
+            _ => 0.0,
+        };
+        ty = match aspect.align {
+            XMinYMid | XMidYMid | XMaxYMid => free_y / 2.0,
+            XMinYMax | XMidYMax | XMaxYMax => free_y,
+            _ => 0.0,
+        };
+    }
+    // viewport = s·(user − origin) + t  ⇒  user = (viewport − t)/s + origin; then y ↦ −y
+    if !(sx > 0.0 && sy > 0.0 && sx.is_finite() && sy.is_finite()) {
+        return None;
+    }
+    Some(Affine {
+        m: Matrix2::new(1.0 / sx, 0.0, 0.0, -1.0 / sy),
+        t: Vector2::new(x - tx / sx, -(y - ty / sy)),
+    })
+}
+
+struct Reader<'a, 'input> {
+    text: &'a str,
+    doc: &'a roxmltree::Document<'input>,
+    tolerance: f64,
+    out: Vec<DrawnPath>,
+}
+
+impl Reader<'_, '_> {
+    /// Reads the drawn paths of `group`, whose coordinates `ts` maps to user units.
+    fn group(&mut self, group: &usvg::Group, ts: &Affine) -> Result<()> {
+        let ts = ts.then_inner(&Affine::of(group.transform()));
+        if group.opacity().get() <= 0.0 {
+            return Ok(());
+        }
+        if group.mask().is_some() {
+            return Err(self.refuse_id(
+                group.id(),
+                "a mask changes what is drawn: the outline of masked content is not read (apply the mask in the drawing program, or remove it)",
+            ));
+        }
+        let first = self.out.len();
+        for child in group.children() {
+            match child {
+                usvg::Node::Group(g) => self.group(g, &ts)?,
+                usvg::Node::Path(p) => self.path(p, &ts)?,
+                usvg::Node::Image(i) => {
+                    return Err(self.refuse_id(i.id(), "an image has no outline"));
+                }
+                // the parser is built without text (module docs); text elements are refused
+                // before it runs
+                _ => {}
+            }
+        }
+        if let Some(clip) = group.clip_path() {
+            self.check_clip(clip, &ts, first)?;
+        }
+        Ok(())
+    }
+
+    /// Reads one path if it is drawn.
+    fn path(&mut self, path: &usvg::Path, ts: &Affine) -> Result<()> {
+        let fill = path
+            .fill()
+            .filter(|f| f.opacity().get() > 0.0)
+            .map(|f| match f.rule() {
+                usvg::FillRule::NonZero => FillRule::NonZero,
+                usvg::FillRule::EvenOdd => FillRule::EvenOdd,
+            });
+        let stretch = ts.mean_stretch();
+        let stroke = path
+            .stroke()
+            .filter(|s| s.opacity().get() > 0.0)
+            .map(|s| Stroke {
+                width: f64::from(s.width().get()) * stretch,
+                cap: match s.linecap() {
+                    usvg::LineCap::Butt => LineCap::Butt,
+                    usvg::LineCap::Round => LineCap::Round,
+                    usvg::LineCap::Square => LineCap::Square,
+                },
+                join: match s.linejoin() {
+                    usvg::LineJoin::Miter => LineJoin::Miter,
+                    usvg::LineJoin::MiterClip => LineJoin::MiterClip,
+                    usvg::LineJoin::Round => LineJoin::Round,
+                    usvg::LineJoin::Bevel => LineJoin::Bevel,
+                },
+                miter_limit: f64::from(s.miterlimit().get()),
+                dashes: s
+                    .dasharray()
+                    .map(|d| d.iter().map(|&x| f64::from(x) * stretch).collect()),
+            });
+        if !path.is_visible() || (fill.is_none() && stroke.is_none()) {
+            return Ok(());
+        }
+        let contours = self
+            .flatten(path.data(), ts, fill.is_some())
+            .map_err(|e| self.place_id(path.id(), e))?;
+        self.out.push(DrawnPath {
+            id: path.id().to_string(),
+            contours,
+            fill,
+            stroke,
+        });
+        Ok(())
+    }
+
+    /// The contours of `data` mapped by `ts`, flattened within the tolerance; each subpath
+    /// closed if `close_all` (a fill closes it).
+    fn flatten(
+        &self,
+        data: &usvg::tiny_skia_path::Path,
+        ts: &Affine,
+        close_all: bool,
+    ) -> Result<Vec<Contour>> {
+        use usvg::tiny_skia_path::PathSegment as S;
+        let mut pen = Flattener::new(self.tolerance)?;
+        let mut open = false;
+        for segment in data.segments() {
+            match segment {
+                S::MoveTo(p) => {
+                    if close_all && open {
+                        pen.close();
+                    }
+                    pen.move_to(ts.apply(p))?;
+                    open = true;
+                }
+                S::LineTo(p) => pen.line_to(ts.apply(p))?,
+                S::QuadTo(c, p) => pen.quad_to(ts.apply(c), ts.apply(p))?,
+                S::CubicTo(c1, c2, p) => pen.cubic_to(ts.apply(c1), ts.apply(c2), ts.apply(p))?,
+                S::Close => {
+                    pen.close();
+                    open = false;
+                }
+            }
+        }
+        if close_all && open {
+            pen.close();
+        }
+        Ok(pen.finish())
+    }
+
+    /// Accepts a clip path that leaves every contour drawn since `first` inside it; refuses
+    /// one that cuts the drawn outline, naming the clipped element and the clip.
+    fn check_clip(&mut self, clip: &usvg::ClipPath, ts: &Affine, first: usize) -> Result<()> {
+        // a clip the document names, or the viewport the parser clips a nested <svg>, a
+        // <symbol> or a marker to
+        let what = if self.element(clip.id()).is_some() {
+            format!("the clip path {:?}", clip.id())
+        } else {
+            "the viewport of a nested <svg>, <symbol> or marker".to_string()
+        };
+        // the element that names the clip, else the first clipped path with an id, else the clip
+        let at = self
+            .referencing(clip.id())
+            .or_else(|| self.out[first..].iter().find_map(|p| self.element(&p.id)))
+            .or_else(|| self.element(clip.id()));
+        if clip.clip_path().is_some() {
+            return Err(self.refuse_node(
+                at,
+                &format!("{what} is clipped again: not read (simplify the clipping in the drawing program)"),
+            ));
+        }
+        let mut region: Vec<(Vec<Contour>, FillRule)> = Vec::new();
+        let ts = ts.then_inner(&Affine::of(clip.transform()));
+        self.clip_region(clip.root(), &ts, &mut region)?;
+        let drawn: Vec<&Contour> = self.out[first..]
+            .iter()
+            .flat_map(|p| p.contours.iter())
+            .collect();
+        if let Err(why) = super::clip::contains(&region, &drawn) {
+            return Err(self.refuse_node(
+                at,
+                &format!("{what} cuts the drawn outline ({why}); the outline of clipped content is not read: apply the clip in the drawing program (in Inkscape: Object ▸ Clip ▸ Release, then Path ▸ Intersection) or remove it"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The filled region of a clip path's children, as contours with their fill rules.
+    fn clip_region(
+        &self,
+        group: &usvg::Group,
+        ts: &Affine,
+        out: &mut Vec<(Vec<Contour>, FillRule)>,
+    ) -> Result<()> {
+        for child in group.children() {
+            match child {
+                usvg::Node::Group(g) => {
+                    if g.clip_path().is_some() {
+                        return Err(self.refuse_id(
+                            g.id(),
+                            "a clip path whose content is clipped again is not read",
+                        ));
+                    }
+                    self.clip_region(g, &ts.then_inner(&Affine::of(g.transform())), out)?
+                }
+                usvg::Node::Path(p) if p.is_visible() => {
+                    let rule = match p.fill().map(|f| f.rule()) {
+                        Some(usvg::FillRule::EvenOdd) => FillRule::EvenOdd,
+                        _ => FillRule::NonZero,
+                    };
+                    let contours = self
+                        .flatten(p.data(), ts, true)
+                        .map_err(|e| self.place_id(p.id(), e))?;
+                    out.push((contours, rule));
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    /// The source element with this `id`, if the document has exactly one.
+    fn element(&self, id: &str) -> Option<roxmltree::Node<'_, '_>> {
+        if id.is_empty() {
+            return None;
+        }
+        let mut found = self
+            .doc
+            .descendants()
+            .filter(|n| n.is_element() && n.attribute("id") == Some(id));
+        let first = found.next()?;
+        found.next().is_none().then_some(first)
+    }
+
+    /// The one element whose `clip-path` (attribute or style) names `#id`.
+    fn referencing(&self, id: &str) -> Option<roxmltree::Node<'_, '_>> {
+        if id.is_empty() {
+            return None;
+        }
+        let url = format!("#{id})");
+        let mut found = self.doc.descendants().filter(|n| {
+            n.is_element()
+                && [n.attribute("clip-path"), n.attribute("style")]
+                    .iter()
+                    .flatten()
+                    .any(|v| v.contains("clip-path") || v.starts_with("url("))
+                && [n.attribute("clip-path"), n.attribute("style")]
+                    .iter()
+                    .flatten()
+                    .any(|v| v.replace(['"', '\'', ' '], "").contains(&url))
+        });
+        let first = found.next()?;
+        found.next().is_none().then_some(first)
+    }
+
+    fn refuse_id(&self, id: &str, message: &str) -> Error {
+        self.refuse_node(self.element(id), message)
+    }
+
+    /// A refusal placed at `node` and naming it (`<rect id="a">: …`), or at the root.
+    fn refuse_node(&self, node: Option<roxmltree::Node<'_, '_>>, message: &str) -> Error {
+        let Some(node) = node else {
+            return refuse_at(
+                self.text,
+                self.doc.root_element().range().start,
+                message.to_string(),
+            );
+        };
+        let named = match node.attribute("id") {
+            Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
+            None => format!("<{}>", node.tag_name().name()),
+        };
+        refuse_at(self.text, node.range().start, format!("{named}: {message}"))
+    }
+
+    /// A flattening refusal placed at the element `id` (or the root).
+    fn place_id(&self, id: &str, e: Error) -> Error {
+        match e {
+            Error::Parse { message, .. } => self.refuse_id(id, &message),
+            other => other,
+        }
+    }
+}
+
+fn refuse_at(text: &str, at: usize, message: String) -> Error {
+    let (line, column) = position(text, at);
+    Error::Parse {
+        what: WHAT,
+        line,
+        column,
+        message,
+    }
+}
+
+/// Refuses, before the parser runs, what it would skip or draw only in part (module docs).
+fn check_elements(doc: &roxmltree::Document) -> Result<()> {
+    let text = doc.input_text();
+    let root = doc.root_element();
+    if root.tag_name().name() != "svg" || root.tag_name().namespace() != Some(SVG_NS) {
+        return Err(refuse_at(
+            text,
+            root.range().start,
+            format!(
+                "the root element is <{}> in the namespace {:?}, not SVG's <svg> (xmlns=\"{SVG_NS}\")",
+                root.tag_name().name(),
+                root.tag_name().namespace().unwrap_or("")
+            ),
+        ));
+    }
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        if node.tag_name().namespace() != Some(SVG_NS) {
+            continue;
+        }
+        let at = node.range().start;
+        let refuse = |message: String| refuse_at(text, at, message);
+        match node.tag_name().name() {
+            "text" => {
+                return Err(refuse(
+                    "a <text> element: text is not read as an outline (convert it to paths in the drawing program, e.g. Inkscape's Path ▸ Object to Path, or remove it)".into(),
+                ))
+            }
+            "image" => return Err(refuse("an <image> has no outline".into())),
+            "foreignObject" => {
+                return Err(refuse("a <foreignObject> has no outline".into()))
+            }
+            _ => {}
+        }
+        for attr in node.attributes() {
+            if attr.namespace().is_some() {
+                continue;
+            }
+            let value = attr.value();
+            let value_at = attr.range_value().start;
+            // the value's text as written: equal to the value unless it holds references
+            let verbatim = text.get(attr.range_value()) == Some(value);
+            let placed = |offset: usize, message: String| {
+                let at = if verbatim {
+                    value_at + offset
+                } else {
+                    value_at
+                };
+                refuse_at(text, at, message)
+            };
+            match (node.tag_name().name(), attr.name()) {
+                ("path", "d") => {
+                    if let Err(e) = contours_from_svg_path(value, f64::MAX) {
+                        let Error::Parse {
+                            line,
+                            column,
+                            message,
+                            ..
+                        } = e
+                        else {
+                            return Err(e);
+                        };
+                        let offset = byte_at(value, line, column);
+                        return Err(placed(offset, message));
+                    }
+                }
+                ("polygon" | "polyline", "points") => {
+                    let mut count = 0usize;
+                    for n in svgtypes::NumberListParser::from(value) {
+                        if n.is_err() {
+                            return Err(placed(0, format!("the points {value:?} cannot be read")));
+                        }
+                        count += 1;
+                    }
+                    if count % 2 == 1 {
+                        return Err(placed(
+                            0,
+                            format!("the points list has an odd count of numbers ({count})"),
+                        ));
+                    }
+                }
+                (_, "transform") if svgtypes::Transform::from_str(value).is_err() => {
+                    return Err(placed(0, format!("the transform {value:?} cannot be read")));
+                }
+                (
+                    "rect" | "circle" | "ellipse" | "line" | "use" | "svg" | "symbol",
+                    "x" | "y" | "width" | "height" | "rx" | "ry" | "cx" | "cy" | "r" | "x1" | "y1"
+                    | "x2" | "y2",
+                ) => {
+                    let auto = value.trim() == "auto";
+                    if !auto && svgtypes::Length::from_str(value).is_err() {
+                        return Err(placed(
+                            0,
+                            format!("the length {}={value:?} cannot be read", attr.name()),
+                        ));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The byte offset of 1-based `line` and `column` (characters) in `text`.
+fn byte_at(text: &str, line: usize, column: usize) -> usize {
+    let mut offset = 0;
+    for (k, l) in text.split_inclusive('\n').enumerate() {
+        if k + 1 == line {
+            return offset
+                + l.char_indices()
+                    .nth(column.saturating_sub(1))
+                    .map_or(l.len(), |(b, _)| b);
+        }
+        offset += l.len();
+    }
+    text.len()
+}
