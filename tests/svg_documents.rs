@@ -11,7 +11,7 @@
 
 use resvg::tiny_skia;
 use resvg::usvg;
-use splinelab::input::svg_document::{drawn_paths, DrawnPath, FillRule, LineCap, LineJoin};
+use splinelab::input::svg_document::{read_svg_document, DrawnPath, FillRule, LineCap, LineJoin};
 use std::path::{Path, PathBuf};
 
 /// The pixels of the longer side of a rendering.
@@ -212,7 +212,9 @@ fn compare(file: &Path) -> Result<(usize, usize, usize), String> {
     let user = sx.max(sy).max(1e-300);
     // the flattening well below a pixel
     let tolerance = 0.05 / (f64::from(k) * user);
-    let paths = drawn_paths(&text, tolerance).map_err(|e| e.to_string())?;
+    let paths = read_svg_document(&text, tolerance)
+        .map_err(|e| e.to_string())?
+        .paths;
     let k = f64::from(k);
     // user units, y up → viewport → pixels
     let to_pixel = |x: f64, y: f64| (((sx * x + tx) * k) as f32, ((sy * -y + ty) * k) as f32);
@@ -255,4 +257,305 @@ fn every_corpus_file_is_read_as_resvg_draws_it_or_refused_by_name() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The parser replaces arcs by cubic Béziers: measured against the exact ellipse, the read
+/// outline lies within the distance the reader states (`SvgOutline::within`), and the
+/// approximation within `ARC_APPROXIMATION` of the larger radius.
+#[test]
+fn arcs_lie_within_the_stated_distance_of_the_exact_ellipse() {
+    use nalgebra::{Matrix2, Vector2};
+    use splinelab::input::svg_document::ARC_APPROXIMATION;
+    use splinelab::input::SvgArc;
+    // (element, centre, radii, rotation in degrees, the element's transform as a matrix and
+    // translation)
+    let id = (Matrix2::identity(), Vector2::zeros());
+    let skew = (Matrix2::new(2.0, -0.4, 0.3, 0.7), Vector2::new(5.0, 5.0));
+    let arc = |from: Vector2<f64>, a: SvgArc, to: Vector2<f64>| {
+        let c = a.centre_form(from, to).unwrap();
+        (c.centre, c.radii)
+    };
+    let (c1, r1) = arc(
+        Vector2::new(10.0, 0.0),
+        SvgArc {
+            radii: Vector2::new(10.0, 5.0),
+            rotation: 20f64.to_radians(),
+            large: true,
+            sweep: true,
+        },
+        Vector2::new(-3.0, 7.0),
+    );
+    let (c2, r2) = arc(
+        Vector2::new(0.0, 0.0),
+        SvgArc {
+            radii: Vector2::new(1.0, 1.0),
+            rotation: 0.0,
+            large: false,
+            sweep: false,
+        },
+        Vector2::new(30.0, 1.0),
+    );
+    let cases = [
+        (
+            "<circle cx='3' cy='4' r='10'/>",
+            Vector2::new(3.0, 4.0),
+            Vector2::new(10.0, 10.0),
+            0.0,
+            id,
+        ),
+        (
+            "<ellipse rx='8' ry='2' transform='rotate(30)'/>",
+            Vector2::zeros(),
+            Vector2::new(8.0, 2.0),
+            30.0,
+            id,
+        ),
+        (
+            "<circle cx='1' cy='2' r='3' transform='matrix(2 0.3 -0.4 0.7 5 5)'/>",
+            Vector2::new(1.0, 2.0),
+            Vector2::new(3.0, 3.0),
+            0.0,
+            skew,
+        ),
+        ("<path d='M 10 0 A 10 5 20 1 1 -3 7'/>", c1, r1, 20.0, id),
+        // radii scaled up: a half circle of radius |(30, 1)|/2
+        ("<path d='M 0 0 A 1 1 0 0 0 30 1'/>", c2, r2, 0.0, id),
+    ];
+    let mut largest = 0.0f64;
+    for (element, centre, radii, rotation, (m, t)) in cases {
+        let doc = format!(
+            "<svg xmlns='http://www.w3.org/2000/svg' viewBox='-50 -50 100 100'>{element}</svg>"
+        );
+        let r = radii.x.max(radii.y);
+        let outline = read_svg_document(&doc, 1e-7 * r).unwrap();
+        let (sin, cos) = f64::to_radians(rotation).sin_cos();
+        let inverse = m.try_inverse().unwrap();
+        // the largest stretch from the unit circle to the document
+        let ellipse = m * Matrix2::new(cos, -sin, sin, cos) * Matrix2::from_diagonal(&radii);
+        let stretch = ellipse.singular_values().max();
+        let mut worst = 0.0f64;
+        for p in outline
+            .paths
+            .iter()
+            .flat_map(|p| p.contours.iter())
+            .flat_map(|c| c.points.iter())
+        {
+            // the document's coordinates (y down), the element's, the unit circle's
+            let local = inverse * (Vector2::new(p.x, -p.y) - t) - centre;
+            let q = Vector2::new(
+                cos * local.x + sin * local.y,
+                -sin * local.x + cos * local.y,
+            );
+            let u = Vector2::new(q.x / radii.x, q.y / radii.y);
+            let off = (u.norm() - 1.0).abs();
+            largest = largest.max(off);
+            // the distance to the ellipse is at most the unit circle's miss times the stretch
+            worst = worst.max(off * stretch);
+        }
+        println!(
+            "{element}: {worst:.3e} from the exact ellipse, within {:.3e} stated",
+            outline.within
+        );
+        assert!(
+            worst <= outline.within,
+            "{element}: {worst:e} > {:e}",
+            outline.within
+        );
+        assert!(
+            outline.within < 2e-3 * stretch,
+            "{element}: the bound {:e} is loose",
+            outline.within
+        );
+    }
+    println!("largest miss on the unit circle: {largest:.4e}");
+    assert!(largest <= ARC_APPROXIMATION, "{largest:e}");
+    // the approximation is the classical one: its error is seen, not rounded away
+    assert!(largest > 0.9 * ARC_APPROXIMATION, "{largest:e}");
+}
+
+mod random_documents {
+    use nalgebra::{Matrix2, Vector2};
+    use proptest::prelude::*;
+    use splinelab::input::Contour;
+
+    /// A random shape element, coordinates within ±50.
+    fn shape() -> impl Strategy<Value = String> {
+        let c = -50.0..50.0f64;
+        let r = 0.5..30.0f64;
+        prop_oneof![
+            (c.clone(), c.clone(), r.clone(), r.clone(), 0.0..5.0f64).prop_map(
+                |(x, y, w, h, rx)| format!(
+                    "<rect x='{x}' y='{y}' width='{w}' height='{h}' rx='{rx}'/>"
+                )
+            ),
+            (c.clone(), c.clone(), r.clone())
+                .prop_map(|(x, y, r)| format!("<circle cx='{x}' cy='{y}' r='{r}'/>")),
+            (c.clone(), c.clone(), r.clone(), r.clone()).prop_map(|(x, y, a, b)| format!(
+                "<ellipse cx='{x}' cy='{y}' rx='{a}' ry='{b}' fill='none' stroke='black'/>"
+            )),
+            proptest::collection::vec((c.clone(), c.clone()), 3..8).prop_map(|p| {
+                let pts: Vec<String> = p.iter().map(|(x, y)| format!("{x},{y}")).collect();
+                format!("<polygon points='{}' fill-rule='evenodd'/>", pts.join(" "))
+            }),
+            (
+                proptest::collection::vec(c.clone(), 8),
+                r.clone(),
+                r,
+                0.0..360.0f64,
+                any::<(bool, bool)>()
+            )
+                .prop_map(|(v, rx, ry, rot, (l, s))| format!(
+                    "<path d='M {} {} C {} {} {} {} {} {} A {rx} {ry} {rot} {} {} {} {} Z'/>",
+                    v[0],
+                    v[1],
+                    v[2],
+                    v[3],
+                    v[4],
+                    v[5],
+                    v[6],
+                    v[7],
+                    u8::from(l),
+                    u8::from(s),
+                    v[0] + 1.0,
+                    v[1] - 2.0
+                )),
+        ]
+    }
+
+    /// A random affine map as SVG's `matrix(a b c d e f)`, not too degenerate.
+    fn affine() -> impl Strategy<Value = (Matrix2<f64>, Vector2<f64>)> {
+        (
+            0.2..3.0f64,
+            0.2..3.0f64,
+            0.0..std::f64::consts::TAU,
+            -0.5..0.5f64,
+            -20.0..20.0f64,
+            -20.0..20.0f64,
+        )
+            .prop_map(|(sx, sy, angle, skew, tx, ty)| {
+                let (s, c) = angle.sin_cos();
+                let m = Matrix2::new(c, -s, s, c)
+                    * Matrix2::new(1.0, skew, 0.0, 1.0)
+                    * Matrix2::from_diagonal(&Vector2::new(sx, sy));
+                (m, Vector2::new(tx, ty))
+            })
+    }
+
+    fn matrix((m, t): &(Matrix2<f64>, Vector2<f64>)) -> String {
+        format!(
+            "matrix({} {} {} {} {} {})",
+            m[(0, 0)],
+            m[(1, 0)],
+            m[(0, 1)],
+            m[(1, 1)],
+            t.x,
+            t.y
+        )
+    }
+
+    fn doc(body: &str) -> String {
+        format!("<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink' viewBox='-200 -200 400 400'>{body}</svg>")
+    }
+
+    /// The largest distance from a vertex of `a` to the polylines of `b`.
+    fn one_way(a: &[Contour], b: &[Contour]) -> f64 {
+        a.iter()
+            .flat_map(|c| c.points.iter())
+            .map(|p| {
+                b.iter()
+                    .flat_map(|c| c.points.windows(2))
+                    .map(|w| splinelab::metrics::curve::segment_distance(*p, w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .fold(0.0, f64::max)
+    }
+
+    const TOL: f64 = 1e-3;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// A shape under a random affine map (nested in two groups, or placed by `<use>`) is
+        /// the map of the shape's outline: within twice the flattening tolerance and the
+        /// parser's single precision (`1e-6` of the coordinates' size: the parser keeps
+        /// coordinates and transforms as `f32`).
+        #[test]
+        fn a_transformed_shape_is_the_transformed_outline(
+            s in shape(),
+            a in affine(),
+            b in affine(),
+            by_use in any::<bool>(),
+        ) {
+            let plain = splinelab::input::contours_from_svg_document(&doc(&s), TOL);
+            let placed = if by_use {
+                doc(&format!(
+                    "<defs><g id='s'>{s}</g></defs><g transform='{}'><use xlink:href='#s' transform='{}'/></g>",
+                    matrix(&a),
+                    matrix(&b)
+                ))
+            } else {
+                doc(&format!("<g transform='{}'><g transform='{}'>{s}</g></g>", matrix(&a), matrix(&b)))
+            };
+            let moved = splinelab::input::contours_from_svg_document(&placed, TOL);
+            let (Ok(plain), Ok(moved)) = (plain, moved) else {
+                // a shape the transform takes off the drawing is still read (no clip here)
+                panic!("{s}: not read");
+            };
+            let (m, t) = (a.0 * b.0, a.0 * b.1 + a.1);
+            // the library's points are y-up viewBox units
+            let mapped: Vec<Contour> = plain
+                .iter()
+                .map(|c| Contour {
+                    closed: c.closed,
+                    points: c
+                        .points
+                        .iter()
+                        .map(|p| {
+                            let q = m * Vector2::new(p.x, -p.y) + t;
+                            Vector2::new(q.x, -q.y)
+                        })
+                        .collect(),
+                })
+                .collect();
+            let stretch = m.singular_values().max();
+            let size = moved
+                .iter()
+                .flat_map(|c| c.points.iter())
+                .map(|p| p.amax())
+                .fold(0.0, f64::max)
+                .max(1.0);
+            let allowed = TOL + stretch * TOL + 1e-6 * size * (1.0 + stretch);
+            let d = one_way(&moved, &mapped).max(one_way(&mapped, &moved));
+            prop_assert!(d <= allowed, "{s} under {}: {d:e} > {allowed:e}", matrix(&(m, t)));
+        }
+
+        /// Random documents of shapes, groups, uses and attributes never panic: an outline of
+        /// finite points or a typed error.
+        #[test]
+        fn random_documents_never_panic(
+            shapes in proptest::collection::vec(shape(), 1..4),
+            noise in "[ -~]{0,12}",
+            where_ in 0usize..3,
+        ) {
+            let mut body = String::new();
+            for (k, s) in shapes.iter().enumerate() {
+                match (k + where_) % 3 {
+                    0 => body += s,
+                    1 => body += &format!("<g id='g{k}' transform='rotate({k}0)'>{s}</g><use href='#g{k}' x='{k}'/>"),
+                    _ => body += &format!("<symbol id='y{k}' viewBox='0 0 10 10'>{s}</symbol><use href='#y{k}' width='50' height='50'/>"),
+                }
+            }
+            let text = doc(&format!("{body}<path d='{}'/>", noise.replace(['\'', '<', '&'], "")));
+            match splinelab::input::contours_from_svg_document(&text, TOL) {
+                Ok(c) => prop_assert!(c
+                    .iter()
+                    .flat_map(|c| c.points.iter())
+                    .all(|p| p.iter().all(|v| v.is_finite()))),
+                Err(e) => prop_assert!(matches!(
+                    e,
+                    splinelab::Error::Parse { .. } | splinelab::Error::TooLarge { .. }
+                ), "{e}"),
+            }
+        }
+    }
 }

@@ -149,7 +149,9 @@ pub struct FewestArgs {
     /// The character of a font file.
     #[arg(long)]
     glyph: Option<char>,
-    /// The flattening tolerance of an SVG's curves (a distance); 10⁻⁴ of the size by default.
+    /// The distance within which an SVG's outline lies of its curves (arcs included, which
+    /// an SVG document's parser replaces by cubics within 2.7·10⁻⁴ of their radius); by
+    /// default curves are flattened within 10⁻⁴ of the size, plus that bound.
     #[arg(long)]
     flatten: Option<f64>,
     /// One of the paper's shapes instead of a file, as its reference polyline (circle,
@@ -172,6 +174,10 @@ pub struct FewestArgs {
     #[arg(long, default_value = "out/fewest")]
     out: PathBuf,
     /// The outline: CSV points, an SVG document, SVG path data (.path) or a font (.ttf/.otf).
+    /// An SVG document's outline is what a viewer draws, in its viewBox's units: a filled
+    /// shape's boundary, a stroke's centre line (not its width); hidden content and
+    /// definitions are not outline; text, images, masks and clips that cut the drawing are
+    /// refused, naming the element (convert text to paths first).
     outline: Option<PathBuf>,
 }
 

@@ -15,5 +15,7 @@ pub mod svg_path;
 pub use csv::{points_from_csv, Columns};
 pub use flatten::{Contour, SvgArc};
 #[cfg(feature = "svg")]
-pub use svg_document::{contours_from_svg_document, drawn_paths, DrawnPath, FillRule, Stroke};
+pub use svg_document::{
+    contours_from_svg_document, read_svg_document, DrawnPath, FillRule, Stroke, SvgOutline,
+};
 pub use svg_path::contours_from_svg_path;

@@ -41,7 +41,9 @@ use usvg::roxmltree;
 /// The largest distance between the parser's cubic Béziers and the exact arc they replace,
 /// as a fraction of the arc's larger radius: `2.73·10⁻⁴`, the error of the classical
 /// four-cubics circle (kurbo's arc approximation, which the parser uses, takes at least four
-/// pieces to a full turn). Measured against the exact ellipse in `tests/svg_documents.rs`.
+/// pieces to a full turn; the per-curve bound the reader states is
+/// [`arc_approximation_bound`]). Measured against the exact ellipse in
+/// `tests/svg_documents.rs`.
 pub const ARC_APPROXIMATION: f64 = 2.73e-4;
 
 const WHAT: &str = "SVG document";
@@ -128,12 +130,29 @@ pub struct DrawnPath {
 /// ```
 ///
 /// # Errors
-/// As [`drawn_paths`].
+/// As [`read_svg_document`].
 pub fn contours_from_svg_document(text: &str, tolerance: f64) -> Result<Vec<Contour>> {
-    Ok(drawn_paths(text, tolerance)?
+    Ok(read_svg_document(text, tolerance)?
+        .paths
         .into_iter()
         .flat_map(|p| p.contours)
         .collect())
+}
+
+/// An SVG document's drawn paths and the distance within which they hold.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SvgOutline {
+    /// The drawn paths, in document order.
+    pub paths: Vec<DrawnPath>,
+    /// The distance within which every polyline lies of the curves the document describes:
+    /// the flattening tolerance, plus, if the document has arcs (path `A` commands,
+    /// `<circle>`, `<ellipse>`, rounded `<rect>`), the bound of the parser's cubic
+    /// approximation of them ([`arc_approximation_bound`] over every cubic drawn); single
+    /// precision rounding aside (module docs).
+    pub within: f64,
+    /// The bound of the parser's approximation of arcs alone (0 without arcs): the part of
+    /// `within` that no flattening tolerance reduces.
+    pub arcs: f64,
 }
 
 /// Every path of an SVG document a viewer draws, with its fill and stroke (module docs),
@@ -144,7 +163,7 @@ pub fn contours_from_svg_document(text: &str, tolerance: f64) -> Result<Vec<Cont
 /// at the document's line and column for XML that cannot be read and for what the module
 /// docs list; [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] points or the
 /// parser's element limit.
-pub fn drawn_paths(text: &str, tolerance: f64) -> Result<Vec<DrawnPath>> {
+pub fn read_svg_document(text: &str, tolerance: f64) -> Result<SvgOutline> {
     crate::error::positive("SVG flattening tolerance", tolerance)?;
     let options = roxmltree::ParsingOptions {
         allow_dtd: true,
@@ -159,7 +178,7 @@ pub fn drawn_paths(text: &str, tolerance: f64) -> Result<Vec<DrawnPath>> {
             message: format!("not well-formed XML: {e}"),
         }
     })?;
-    check_elements(&doc)?;
+    let has_arcs = check_elements(&doc)?;
     let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| match e {
         usvg::Error::ElementsLimitReached => Error::TooLarge {
             what: "SVG elements (with every <use> expanded)",
@@ -179,6 +198,8 @@ pub fn drawn_paths(text: &str, tolerance: f64) -> Result<Vec<DrawnPath>> {
         text,
         doc: &doc,
         tolerance,
+        has_arcs,
+        arc_bound: 0.0,
         out: Vec::new(),
     };
     reader.group(tree.root(), &to_user)?;
@@ -189,7 +210,30 @@ pub fn drawn_paths(text: &str, tolerance: f64) -> Result<Vec<DrawnPath>> {
             "the document draws nothing (no visible path, shape or use of one)".into(),
         ));
     }
-    Ok(reader.out)
+    Ok(SvgOutline {
+        within: tolerance + reader.arc_bound,
+        arcs: reader.arc_bound,
+        paths: reader.out,
+    })
+}
+
+/// A bound on the distance between a cubic Bézier `p` and the elliptical arc it replaces, if
+/// it is the parser's approximation of one (kurbo's: pieces of at most a quarter turn, the
+/// classical handles `4/3·tan(Δθ/4)`, in the ellipse's unit circle, mapped by the ellipse's
+/// and the document's affine maps): `1.93·10⁻⁴·|p₃ − p₀| + 9.31·10⁻⁴·|B(½) − (p₀ + p₃)/2|`.
+///
+/// Why: on the unit circle a piece of sweep `Δθ ≤ π/2` misses the arc by at most `E(Δθ)`,
+/// `E(π/2) = 2.7253·10⁻⁴`, increasing as `Δθ⁶`; its chord is `2·sin(Δθ/2)` along the
+/// unit tangent `t` of its middle and its midpoint `B(½)` lies on the circle, `1 − cos(Δθ/2)`
+/// from the chord along the normal `n`. An affine map `L` takes the radial error `E·r`, `r`
+/// within a quarter turn of `n`, to at most `E·(|Lt| + |Ln|)`, and `|Lt|`, `|Ln|` are the
+/// mapped chord and midpoint offset divided by those lengths; the two ratios
+/// `E/(2 sin(Δθ/2))` and `E/(1 − cos(Δθ/2))` grow with `Δθ`, to `1.927·10⁻⁴` and `9.305·10⁻⁴`
+/// at a quarter turn. Measured against the exact ellipse in `tests/svg_documents.rs`.
+pub fn arc_approximation_bound(p: &[Vector2<f64>; 4]) -> f64 {
+    let mid = (p[0] + p[3]) * 0.5;
+    let half = (p[0] + (p[1] * 3.0) + (p[2] * 3.0) + p[3]) / 8.0;
+    1.93e-4 * (p[3] - p[0]).norm() + 9.31e-4 * (half - mid).norm()
 }
 
 /// An affine map `x ↦ m·x + t` in double precision.
@@ -281,6 +325,10 @@ struct Reader<'a, 'input> {
     text: &'a str,
     doc: &'a roxmltree::Document<'input>,
     tolerance: f64,
+    /// Whether the document has arcs, which the parser replaces by cubics.
+    has_arcs: bool,
+    /// The largest [`arc_approximation_bound`] of a drawn cubic (if `has_arcs`).
+    arc_bound: f64,
     out: Vec<DrawnPath>,
 }
 
@@ -353,6 +401,9 @@ impl Reader<'_, '_> {
         let contours = self
             .flatten(path.data(), ts, fill.is_some())
             .map_err(|e| self.place_id(path.id(), e))?;
+        if self.has_arcs {
+            self.arc_bound = self.arc_bound.max(arcs_bound(path.data(), ts));
+        }
         self.out.push(DrawnPath {
             id: path.id().to_string(),
             contours,
@@ -531,6 +582,30 @@ impl Reader<'_, '_> {
     }
 }
 
+/// The largest [`arc_approximation_bound`] of the cubics of `data` mapped by `ts`.
+fn arcs_bound(data: &usvg::tiny_skia_path::Path, ts: &Affine) -> f64 {
+    use usvg::tiny_skia_path::PathSegment as S;
+    let mut last = Vector2::zeros();
+    let mut start = Vector2::zeros();
+    let mut bound = 0.0f64;
+    for segment in data.segments() {
+        last = match segment {
+            S::MoveTo(p) => {
+                start = ts.apply(p);
+                start
+            }
+            S::LineTo(p) | S::QuadTo(_, p) => ts.apply(p),
+            S::CubicTo(c1, c2, p) => {
+                let q = [last, ts.apply(c1), ts.apply(c2), ts.apply(p)];
+                bound = bound.max(arc_approximation_bound(&q));
+                q[3]
+            }
+            S::Close => start,
+        };
+    }
+    bound
+}
+
 fn refuse_at(text: &str, at: usize, message: String) -> Error {
     let (line, column) = position(text, at);
     Error::Parse {
@@ -541,8 +616,10 @@ fn refuse_at(text: &str, at: usize, message: String) -> Error {
     }
 }
 
-/// Refuses, before the parser runs, what it would skip or draw only in part (module docs).
-fn check_elements(doc: &roxmltree::Document) -> Result<()> {
+/// Refuses, before the parser runs, what it would skip or draw only in part (module docs);
+/// says whether the document has arcs (path `A`, circles, ellipses, rounded rectangles).
+fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
+    let mut arcs = false;
     let text = doc.input_text();
     let root = doc.root_element();
     if root.tag_name().name() != "svg" || root.tag_name().namespace() != Some(SVG_NS) {
@@ -569,6 +646,13 @@ fn check_elements(doc: &roxmltree::Document) -> Result<()> {
                 ))
             }
             "image" => return Err(refuse("an <image> has no outline".into())),
+            "circle" | "ellipse" => arcs = true,
+            "rect" => arcs |= node.has_attribute("rx") || node.has_attribute("ry"),
+            "path" => {
+                arcs |= node
+                    .attribute("d")
+                    .is_some_and(|d| d.contains(['A', 'a']))
+            }
             "foreignObject" => {
                 return Err(refuse("a <foreignObject> has no outline".into()))
             }
@@ -641,7 +725,7 @@ fn check_elements(doc: &roxmltree::Document) -> Result<()> {
             }
         }
     }
-    Ok(())
+    Ok(arcs)
 }
 
 /// The byte offset of 1-based `line` and `column` (characters) in `text`.

@@ -3,7 +3,7 @@
 //! of a font (`.ttf`, `.otf`).
 
 use crate::input::Contour;
-use crate::input::{contours_from_svg_document, contours_from_svg_path, points_from_csv, Columns};
+use crate::input::{contours_from_svg_path, points_from_csv, read_svg_document, Columns};
 use crate::report::error::{Error, Result};
 use nalgebra::Vector2;
 use std::path::Path;
@@ -23,8 +23,10 @@ pub struct ReadOptions {
     pub closed: Option<bool>,
     /// The character of a font file to read.
     pub glyph: Option<char>,
-    /// The flattening tolerance of an SVG's curves (a distance); `None`:
-    /// [`FLATTEN_FRACTION`] of the outline's size.
+    /// The distance within which an SVG's outline lies of the curves it describes (an SVG
+    /// document's arcs included, which its parser replaces by cubics within
+    /// [`crate::input::SvgOutline::arcs`]); `None`: curves flattened within
+    /// [`FLATTEN_FRACTION`] of the outline's size, plus that bound.
     pub flatten: Option<f64>,
 }
 
@@ -127,8 +129,9 @@ pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> 
 /// contours in em units.
 ///
 /// # Errors
-/// As [`FileKind::of`], [`read_text`], [`points_from_csv`], [`contours_from_svg_document`],
-/// [`contours_from_svg_path`] and [`crate::report::seed004::letters::glyph`];
+/// As [`FileKind::of`], [`read_text`], [`points_from_csv`],
+/// [`read_svg_document`], [`contours_from_svg_path`] and
+/// [`crate::report::seed004::letters::glyph`];
 /// [`crate::Error::Parse`] for a font without `options.glyph`.
 pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> {
     let kind = FileKind::of(path)?;
@@ -140,21 +143,46 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                 .unwrap_or(points.len() > 2 && points.first() == points.last());
             Ok(vec![Contour { points, closed }])
         }
-        FileKind::Svg | FileKind::PathData => {
+        FileKind::PathData => {
             let text = read_text(path)?;
-            let parse = |tolerance: f64| -> Result<Vec<Contour>> {
-                Ok(if kind == FileKind::Svg {
-                    contours_from_svg_document(&text, tolerance)?
-                } else {
-                    contours_from_svg_path(&text, tolerance)?
-                })
-            };
             let tolerance = match options.flatten {
                 Some(t) => t,
                 // the size from the path's end points (curves as chords), then the curves
-                None => FLATTEN_FRACTION * size(&parse(f64::MAX)?),
+                None => FLATTEN_FRACTION * size(&contours_from_svg_path(&text, f64::MAX)?),
             };
-            parse(tolerance)
+            Ok(contours_from_svg_path(&text, tolerance)?)
+        }
+        FileKind::Svg => {
+            let text = read_text(path)?;
+            // the size from the end points (curves as chords) and the arcs' bound, which no
+            // flattening changes
+            let coarse = read_svg_document(&text, f64::MAX)?;
+            let tolerance = match options.flatten {
+                Some(t) if t.is_finite() && t > coarse.arcs => t - coarse.arcs,
+                Some(t) if t > 0.0 && t.is_finite() => {
+                    return Err(crate::Error::Parse {
+                        what: "SVG flattening tolerance",
+                        line: 1,
+                        column: 1,
+                        message: format!(
+                            "{t:e} is below {:e}, the distance within which the SVG parser's cubics follow the document's arcs: give a larger tolerance",
+                            coarse.arcs
+                        ),
+                    }
+                    .into())
+                }
+                Some(t) => t,
+                None => {
+                    let all: Vec<Contour> =
+                        coarse.paths.into_iter().flat_map(|p| p.contours).collect();
+                    FLATTEN_FRACTION * size(&all)
+                }
+            };
+            Ok(read_svg_document(&text, tolerance)?
+                .paths
+                .into_iter()
+                .flat_map(|p| p.contours)
+                .collect())
         }
         FileKind::Font => {
             let ch = options.glyph.ok_or(crate::Error::Parse {
