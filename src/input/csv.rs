@@ -113,10 +113,11 @@ pub fn points_from_csv<const N: usize>(
         counted = counted.max(byte);
         let line = counted_line;
         let places = field_places(source, byte, line, delimiter);
-        let mut fields: Vec<Field> = record
+        let unquoted: Vec<std::borrow::Cow<str>> = record.iter().map(unquote).collect();
+        let mut fields: Vec<Field> = unquoted
             .iter()
             .enumerate()
-            .map(|(k, f)| (f, places.get(k).copied().unwrap_or((line, 1))))
+            .map(|(k, f)| (f.as_ref(), places.get(k).copied().unwrap_or((line, 1))))
             .collect();
         if separator.is_none() {
             // runs of blanks make empty fields between them
@@ -229,6 +230,15 @@ fn fields_outside_quotes(row: &str, sep: Option<char>) -> usize {
         }
     }
     count + usize::from(in_field)
+}
+
+/// A field quoted after blanks (`x, "y"`: the reader takes a quote for a quote only at a
+/// field's first character) without its quotes, doubled quotes made single.
+fn unquote(field: &str) -> std::borrow::Cow<'_, str> {
+    match field.strip_prefix('"').and_then(|f| f.strip_suffix('"')) {
+        Some(inner) => std::borrow::Cow::Owned(inner.replace("\"\"", "\"")),
+        None => std::borrow::Cow::Borrowed(field),
+    }
 }
 
 fn no_rows() -> Error {
