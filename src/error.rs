@@ -248,7 +248,7 @@ pub enum Error {
     },
     /// Two consecutive points coincide (a chord-based parametrization could not separate them;
     /// an Angular piece would have no chord).
-    #[error("point {index} coincides with point {prev_index}: consecutive points must be distinct", prev_index = index.saturating_sub(1))]
+    #[error("point {index} coincides with point {prev_index} (indices from 0): consecutive points must be distinct", prev_index = index.saturating_sub(1))]
     RepeatedPoint {
         /// Index of the second of the two points.
         index: usize,

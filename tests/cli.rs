@@ -337,6 +337,23 @@ fn each_user_command_has_help_with_an_example() {
 #[test]
 fn fit_writes_samples_figures_and_the_svg_path_and_prints_formulas() {
     let dir = tempfile::tempdir().unwrap();
+    // a ring stored with its first point repeated (the shipped coastline): that ring, said so
+    let ring = dir.path().join("ring");
+    let printed = stdout_of(&[
+        "fit",
+        "--method",
+        "linear",
+        "--closed",
+        "--out",
+        ring.to_str().unwrap(),
+        concat!(env!("CARGO_MANIFEST_DIR"), "/data/sicily-coastline.csv"),
+    ]);
+    assert!(
+        printed.contains(
+            "the last point repeats the first: the closed curve is the ring of the first"
+        ),
+        "{printed}"
+    );
     let out = dir.path().join("fit");
     let printed = stdout_of(&[
         "fit",

@@ -544,3 +544,71 @@ fn a_surface_on_a_users_partition_is_a_mesh_in_every_format() {
         .partitions(&BuiltIn::Exp)
         .is_err());
 }
+
+/// A ring stored the usual way, its first point repeated at its end, is that ring: every
+/// method's closed curve equals the one through the points without the repeat, and the fit
+/// says it dropped it; a real coincidence is named by its indices.
+#[test]
+fn a_closed_rings_repeated_first_point_is_dropped_and_coincidences_are_named() {
+    use splinelab::report::user::fit::Fit;
+    use splinelab::{CubicEnd, Method};
+    let ring: Vec<V> = [(0.0, 0.0), (2.0, 0.0), (2.5, 1.5), (1.0, 2.0), (-0.5, 1.0)]
+        .iter()
+        .map(|&(x, y)| V::new(x, y))
+        .collect();
+    let mut stored = ring.clone();
+    stored.push(ring[0]);
+    for method in [
+        Method::Angular,
+        Method::Cardinal { a: 0.5 },
+        Method::Cubic {
+            end: CubicEnd::Cyclic,
+        },
+        Method::BSpline { order: 4 },
+        Method::Linear,
+    ] {
+        let a = Fit::try_new(&stored, method, true).unwrap();
+        let b = Fit::try_new(&ring, method, true).unwrap();
+        assert_eq!(a.curve, b.curve, "{method:?}");
+        assert!(a.dropped_ring_repeat() && !b.dropped_ring_repeat());
+        // open, the repeat is a point of the curve
+        let open = Fit::try_new(&stored, method, false).unwrap();
+        assert!(!open.dropped_ring_repeat());
+    }
+    // a real coincidence: points 2 and 3 (from 0)
+    let mut dup = ring.clone();
+    dup.insert(3, ring[2]);
+    let err = Fit::try_new(&dup, Method::Linear, true)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("point 3 coincides with point 2 (indices from 0)"),
+        "{err}"
+    );
+    // a ring stored with two repeats: named as such
+    let mut twice = stored.clone();
+    twice.push(ring[0]);
+    let err = Fit::try_new(&twice, Method::Linear, true)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("point 6 coincides with point 5"), "{err}");
+    // the shipped coastline is such a ring
+    let coast = splinelab::report::user::outline::read_points(
+        Path::new(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/data/sicily-coastline.csv"
+        )),
+        &Default::default(),
+    )
+    .unwrap();
+    assert_eq!(coast.first(), coast.last());
+    let fit = Fit::try_new(
+        &coast,
+        Method::Cubic {
+            end: CubicEnd::Cyclic,
+        },
+        true,
+    )
+    .unwrap();
+    assert!(fit.dropped_ring_repeat());
+}

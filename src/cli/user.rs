@@ -258,6 +258,12 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
         MethodName::Linear => Method::Linear,
     };
     let fit = Fit::try_new(&points, method, args.closed).context("fitting the curve")?;
+    if fit.dropped_ring_repeat() {
+        crate::say(format_args!(
+            "the last point repeats the first: the closed curve is the ring of the first {} points",
+            points.len() - 1
+        ))?;
+    }
     let name = stem(&args.points);
     // everything is computed before anything is written
     let csv = fit.samples_csv(args.samples)?;

@@ -92,8 +92,14 @@ impl Method {
         }
     }
 
-    /// The points of `points` as the method uses them: closed curves get the paper's repeats.
+    /// The points of `points` as the method uses them: closed curves get the paper's repeats
+    /// (after [`ring`] drops a closing repeat the points already have).
     pub fn prepared(&self, points: &[Vector2<f64>], closed: bool) -> Vec<Vector2<f64>> {
+        self.repeated(ring(points, closed), closed)
+    }
+
+    /// `points` (a ring without its closing repeat) and a closed curve's repeats.
+    fn repeated(&self, points: &[Vector2<f64>], closed: bool) -> Vec<Vector2<f64>> {
         let mut all = points.to_vec();
         all.extend(points.iter().take(self.repeats(closed)).copied());
         all
@@ -112,8 +118,15 @@ impl Method {
     /// The errors of the method's constructor ([`AngularSpline::try_new`],
     /// [`CardinalSpline::try_new`], [`CubicSpline::curve`], [`BSplineCurve::with_order`],
     /// [`PiecewiseLinear::curve`]).
+    /// A closed curve's points may end with a repeat of the first, the usual way a ring is
+    /// stored: it is dropped ([`ring`]). Two consecutive points that coincide are named by
+    /// their indices (from 0) in `points`.
     pub fn curve(&self, points: &[Vector2<f64>], closed: bool) -> Result<Interpolant> {
-        let all = self.prepared(points, closed);
+        self.curve_of_ring(ring(points, closed), closed)
+    }
+
+    fn curve_of_ring(&self, points: &[Vector2<f64>], closed: bool) -> Result<Interpolant> {
+        let all = self.repeated(points, closed);
         Ok(match *self {
             Method::Angular if closed => Interpolant::Angular(AngularSpline::closed(points)?),
             Method::Angular => Interpolant::Angular(AngularSpline::try_new(all)?),
@@ -133,6 +146,17 @@ impl Method {
                 Interpolant::Linear(PiecewiseLinear::curve(&all, Parametrization::ChordLength)?)
             }
         })
+    }
+}
+
+/// The points of a ring without the repeat that closes it: `points` less its last point when
+/// `closed`, there are more than two, and the last equals the first; else `points`.
+pub fn ring(points: &[Vector2<f64>], closed: bool) -> &[Vector2<f64>] {
+    match points {
+        [first, .., last] if closed && points.len() > 2 && first == last => {
+            &points[..points.len() - 1]
+        }
+        _ => points,
     }
 }
 

@@ -71,6 +71,12 @@ impl Fit {
         })
     }
 
+    /// Whether the points given end with a repeat of the first that closes the ring, dropped
+    /// for the closed curve ([`crate::interp::methods::ring`]).
+    pub fn dropped_ring_repeat(&self) -> bool {
+        crate::interp::methods::ring(&self.points, self.closed).len() < self.points.len()
+    }
+
     /// The points the method draws through: the given ones and a closed curve's repeats.
     pub fn drawn_points(&self) -> Vec<Vector2<f64>> {
         self.method.prepared(&self.points, self.closed)
