@@ -191,44 +191,177 @@ impl Fit {
         Ok(Figure::from(Figure2d::new(title, vec![panel], (1, 1))).with_size(800, 640))
     }
 
-    /// The formulas of `x` and `y` on every piece, in the piece's local variable
-    /// `u = t − tᵢ` ([`curve_formulas_local`], traced from the same generic code that
-    /// evaluates the curve), with the piece's interval.
+    /// The ranges of `t` on which one formula gives the curve, piece by piece: each piece
+    /// `[tᵢ, tᵢ₊₁]` cut where the curve's evaluation changes formula within it
+    /// ([`ParametricCurve::span_at`]: an Angular inflection piece's two arcs).
+    pub fn formula_ranges(&self) -> Vec<Vec<(f64, f64)>> {
+        self.curve
+            .breaks()
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let mut ranges = Vec::new();
+                let mut lo = a;
+                // at most a few formulas a piece; the bound keeps a curve whose spans do not
+                // advance from looping
+                for _ in 0..64 {
+                    let hi = match self.curve.span_at(lo) {
+                        Some(span) if span.hi > lo && span.hi < b => span.hi,
+                        _ => b,
+                    };
+                    ranges.push((lo, hi));
+                    if hi >= b {
+                        break;
+                    }
+                    lo = hi;
+                }
+                ranges
+            })
+            .collect()
+    }
+
+    /// The formulas of `x` and `y` on every piece, in the local variable `u = t − t₀` of the
+    /// range they hold on ([`curve_formulas_local`], traced from the same generic code that
+    /// evaluates the curve): one range a piece, or one an arc where a piece changes formula
+    /// within it ([`Fit::formula_ranges`]: an Angular inflection piece's two arcs, each with
+    /// its own range). Every formula is checked against the curve at 17 parameters spread
+    /// over the whole range it is printed for, ends included.
     ///
     /// # Errors
-    /// As [`curve_formulas_local`] (a formula beyond the size limits).
+    /// As [`curve_formulas_local`] (a formula beyond the size limits);
+    /// [`crate::Error::FormulaCheck`] where a formula is not the curve on its range.
     pub fn formulas(&self, style: FormulaStyle) -> Result<String> {
-        let breaks = self.curve.breaks();
-        let pieces = breaks.len().saturating_sub(1);
+        let ranges = self.formula_ranges();
+        let pieces = ranges.len();
         let mut out = String::new();
-        for (i, w) in breaks.windows(2).enumerate() {
-            let f = curve_formulas_local(&self.curve, 0.5 * (w[0] + w[1]))?;
-            let origin = crate::printed::number(f.origin.unwrap_or(0.0));
-            let (a, b) = (crate::printed::number(w[0]), crate::printed::number(w[1]));
-            match style {
-                FormulaStyle::Plain => {
-                    let _ = writeln!(
-                        out,
-                        "piece {} of {pieces}, t in [{a}, {b}], u = t - {origin}:",
-                        i + 1
-                    );
-                    for (name, x) in ["x", "y"].iter().zip(&f.point) {
-                        let _ = writeln!(out, "  {name}(u) = {}", x.plain());
+        for (i, piece) in ranges.iter().enumerate() {
+            for (k, &(a, b)) in piece.iter().enumerate() {
+                let f = curve_formulas_local(&self.curve, 0.5 * (a + b))?;
+                let origin = f.origin.unwrap_or(0.0);
+                self.check_formulas(&f.point, origin, a, b)?;
+                let arc = if piece.len() > 1 {
+                    format!(", arc {} of {}", k + 1, piece.len())
+                } else {
+                    String::new()
+                };
+                let (o, a, b) = (
+                    crate::printed::number(origin),
+                    crate::printed::number(a),
+                    crate::printed::number(b),
+                );
+                match style {
+                    FormulaStyle::Plain => {
+                        let _ = writeln!(
+                            out,
+                            "piece {} of {pieces}{arc}, t in [{a}, {b}], u = t - {o}:",
+                            i + 1
+                        );
+                        for (name, x) in ["x", "y"].iter().zip(&f.point) {
+                            let _ = writeln!(out, "  {name}(u) = {}", x.plain());
+                        }
                     }
-                }
-                FormulaStyle::Latex => {
-                    let _ = writeln!(
-                        out,
-                        "% piece {} of {pieces}, t \\in [{a}, {b}], u = t - {origin}\n\\begin{{align*}}",
-                        i + 1
-                    );
-                    for (name, x) in ["x", "y"].iter().zip(&f.point) {
-                        let _ = writeln!(out, "  {name}(u) &= {} \\\\", x.latex());
+                    FormulaStyle::Latex => {
+                        let _ = writeln!(
+                            out,
+                            "% piece {} of {pieces}{arc}, t \\in [{a}, {b}], u = t - {o}\n\\begin{{align*}}",
+                            i + 1
+                        );
+                        for (name, x) in ["x", "y"].iter().zip(&f.point) {
+                            let _ = writeln!(out, "  {name}(u) &= {} \\\\", x.latex());
+                        }
+                        out.push_str("\\end{align*}\n");
                     }
-                    out.push_str("\\end{align*}\n");
                 }
             }
         }
         Ok(out)
+    }
+
+    /// That the formulas `point` (in `u = t − origin`) give the curve on `[a, b]`: at 17
+    /// parameters spread over it, ends included, each coordinate within `10⁻⁹` of the curve's
+    /// size (rounding of the two evaluations is far below; a formula of another piece or arc
+    /// misses by the curve's own scale).
+    fn check_formulas(
+        &self,
+        point: &[crate::symbolic::Formula],
+        origin: f64,
+        a: f64,
+        b: f64,
+    ) -> Result<()> {
+        const SAMPLES: usize = 16;
+        let drawn = self.drawn_points();
+        let scale = drawn
+            .iter()
+            .map(|p| p.amax())
+            .fold(0.0f64, f64::max)
+            .max(f64::MIN_POSITIVE);
+        let allowed = 1e-9 * scale;
+        for k in 0..=SAMPLES {
+            let t = a + (b - a) * (k as f64 / SAMPLES as f64);
+            let curve = self.curve.try_point(t)?;
+            for (c, formula) in point.iter().enumerate() {
+                let value = formula.eval(&[t - origin]);
+                if (value - curve[c]).abs() > allowed || value.is_nan() {
+                    return Err(crate::Error::FormulaCheck {
+                        formula: format!(
+                            "{} = {} on t in [{}, {}], at t = {}",
+                            ["x(u)", "y(u)"][c.min(1)],
+                            formula.plain(),
+                            crate::printed::number(a),
+                            crate::printed::number(b),
+                            crate::printed::number(t)
+                        ),
+                        evaluated: value,
+                        traced: curve[c],
+                        bound: allowed,
+                    }
+                    .into());
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Points whose middle Angular piece has an inflection: two arcs, two formulas.
+    fn inflection() -> Fit {
+        let points =
+            [(0.0, 0.0), (1.0, 0.0), (2.0, 1.0), (3.0, 1.0)].map(|(x, y)| Vector2::new(x, y));
+        Fit::try_new(&points, Method::Angular, false).unwrap()
+    }
+
+    #[test]
+    fn an_inflection_piece_prints_each_arc_on_its_own_range() {
+        let fit = inflection();
+        assert_eq!(fit.formula_ranges(), vec![vec![(0.0, 0.5), (0.5, 1.0)]]);
+        let text = fit.formulas(FormulaStyle::Plain).unwrap();
+        assert!(
+            text.contains("piece 1 of 1, arc 1 of 2, t in [0, 1/2], u = t - 0:"),
+            "{text}"
+        );
+        assert!(
+            text.contains("piece 1 of 1, arc 2 of 2, t in [1/2, 1], u = t - 1/2:"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn a_formula_is_refused_on_a_range_where_it_is_not_the_curve() {
+        let fit = inflection();
+        // the second arc's formulas claimed for the whole piece, as one trace at the piece's
+        // middle would: refused
+        let f = curve_formulas_local(&fit.curve, 0.75).unwrap();
+        let origin = f.origin.unwrap();
+        assert!(fit.check_formulas(&f.point, origin, 0.5, 1.0).is_ok());
+        let err = fit.check_formulas(&f.point, origin, 0.0, 1.0).unwrap_err();
+        assert!(
+            err.to_string()
+                .contains("on t in [0, 1], at t = 0 gives 4.0169"),
+            "{err}"
+        );
     }
 }
