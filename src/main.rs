@@ -96,6 +96,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    splinelab::report::remove_temporaries_on_interrupt();
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -1,5 +1,6 @@
 //! The `splinelab` binary: default outputs, --list, --only, bench, and readable failures.
 
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn splinelab() -> Command {
@@ -570,4 +571,61 @@ fn surface_exports_a_mesh_of_the_users_partition() {
         .output()
         .unwrap();
     assert!(String::from_utf8_lossy(&out.stderr).contains(".obj, .ply or .stl"));
+}
+
+/// Ctrl-C during a run leaves no temporary file: the default run, interrupted at a range of
+/// moments while it renders figures into temporary files, leaves only whole outputs.
+#[test]
+fn an_interrupted_run_leaves_no_temporary_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut interrupted_with_outputs = 0;
+    for k in 0..8u64 {
+        let out = dir.path().join(format!("run{k}"));
+        let mut child = splinelab()
+            .args(["--out", out.to_str().unwrap()])
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(300 + 250 * k));
+        // SAFETY: sending a signal to our own child
+        unsafe {
+            libc::kill(child.id() as libc::pid_t, libc::SIGINT);
+        }
+        let status = child.wait().unwrap();
+        let mut left = Vec::new();
+        let mut outputs = 0;
+        for entry in walk(&out) {
+            let name = entry.file_name().unwrap().to_string_lossy().to_string();
+            if name.contains(".tmp.") {
+                left.push(entry.clone());
+            } else {
+                outputs += 1;
+            }
+        }
+        assert!(left.is_empty(), "after {k}: {left:?} left ({status:?})");
+        if !status.success() && outputs > 0 {
+            interrupted_with_outputs += 1;
+        }
+    }
+    assert!(
+        interrupted_with_outputs > 0,
+        "no run was interrupted while writing"
+    );
+}
+
+/// Every file under `dir`.
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    if let Ok(entries) = std::fs::read_dir(dir) {
+        for e in entries.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                out.extend(walk(&p));
+            } else {
+                out.push(p);
+            }
+        }
+    }
+    out
 }

@@ -534,7 +534,7 @@ mod curves {
         let d = export::svg_path(&s);
         assert!(!d.ends_with('Z'));
         assert_eq!(read_path(&d), s);
-        let doc = export::svg_document(&s, 0.05);
+        let doc = export::svg_document(&s, 0.05).unwrap();
         assert!(doc.starts_with("<svg ") && doc.contains(&format!("d=\"{d}\"")));
     }
 }

@@ -539,3 +539,112 @@ mod smooth_curves_and_arcs {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Limits that hold at the limit
+// ---------------------------------------------------------------------------------------------
+
+mod limits {
+    use nalgebra::Vector2;
+    use proptest::prelude::*;
+    use splinelab::input::{contours_from_svg_path, SvgArc};
+    use splinelab::Error;
+
+    #[test]
+    fn a_curve_past_the_piece_cap_is_refused_not_drawn_coarse() {
+        // a half circle of radius 5e9 within 1e-6 needs ~8e7 chords
+        match contours_from_svg_path("M 0 0 A 1 1 0 0 1 1e10 0", 1e-6) {
+            Err(Error::Parse {
+                column, message, ..
+            }) => {
+                assert_eq!(column, 7, "{message}");
+                assert!(message.contains("more than 65536 pieces"), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
+        // a cubic as long
+        assert!(matches!(
+            contours_from_svg_path("M 0 0 C 0 1e10 1e10 1e10 1e10 0", 1e-6),
+            Err(Error::Parse { .. })
+        ));
+        // at a coarser tolerance both are read, every chord within it
+        let c = contours_from_svg_path("M 0 0 A 1 1 0 0 1 1e10 0", 1e3).unwrap();
+        let centre = Vector2::new(5e9, 0.0);
+        for w in c[0].points.windows(2) {
+            let mid = (w[0] + w[1]) * 0.5;
+            assert!(5e9 - (mid - centre).norm() <= 1e3 * (1.0 + 1e-9));
+        }
+    }
+
+    #[test]
+    fn arcs_with_extreme_radii_are_read_or_refused_by_name() {
+        // radii negligible beside the chord: scaled up to the half circle on it
+        let c = contours_from_svg_path("M 0 0 A 1e-300 1e-300 0 1 1 1e6 0", 1e-3).unwrap();
+        let centre = Vector2::new(5e5, 0.0);
+        for p in &c[0].points {
+            assert!(((p - centre).norm() - 5e5).abs() <= 1e-9 * 5e5, "{p:?}");
+        }
+        assert!(c[0].points.len() > 100);
+        // subnormal radii, and radii so unequal that their ratio underflows: a line
+        for d in [
+            "M 0 0 A 1e-320 1e-320 0 1 1 1e6 0",
+            "M 0 0 A 1e300 1e-300 0 1 1 1e6 0",
+        ] {
+            let c = contours_from_svg_path(d, 1e-3).unwrap();
+            assert!(
+                c[0].points.iter().all(|p| p.iter().all(|v| v.is_finite())),
+                "{d}"
+            );
+        }
+        // an arc that reaches beyond the largest coordinate is refused naming the arc
+        match contours_from_svg_path("M 0 0 A 1e307 1e307 0 1 1 1 0", 1e300) {
+            Err(Error::Parse { message, .. }) => {
+                assert!(message.contains("the arc (radii"), "{message}")
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    proptest! {
+        /// Radii too small for the end points are scaled up and the centre is the chord's
+        /// midpoint, exactly (SVG's radicand is zero there); every point drawn lies on the
+        /// scaled ellipse.
+        #[test]
+        fn scaled_up_arcs_are_centred_exactly_on_the_chord(
+            from in (-1e3f64..1e3, -1e3f64..1e3),
+            to in (-1e3f64..1e3, -1e3f64..1e3),
+            shape in (0.05f64..1.0, 0.05f64..1.0),
+            shrink in 1e-6f64..0.999,
+            rotation in 0.0f64..360.0,
+            flags in any::<(bool, bool)>(),
+        ) {
+            let (from, to) = (Vector2::new(from.0, from.1), Vector2::new(to.0, to.1));
+            prop_assume!((from - to).norm() > 1e-3);
+            // radii of this shape just large enough, then shrunk
+            let probe = SvgArc {
+                radii: Vector2::new(shape.0, shape.1) * 1e-9,
+                rotation: rotation.to_radians(),
+                large: flags.0,
+                sweep: flags.1,
+            };
+            let needed = probe.centre_form(from, to).unwrap().radii;
+            let arc = SvgArc { radii: needed * shrink, ..probe };
+            let c = arc.centre_form(from, to).unwrap();
+            prop_assert_eq!(c.centre, (from + to) * 0.5);
+            prop_assert!((c.sweep.abs() - std::f64::consts::PI).abs() < 1e-9);
+            let d = format!(
+                "M {} {} A {} {} {rotation} {} {} {} {}",
+                from.x, from.y, arc.radii.x, arc.radii.y,
+                u8::from(flags.0), u8::from(flags.1), to.x, to.y
+            );
+            let points = &contours_from_svg_path(&d, 1e-9 * c.radii.amax()).unwrap()[0].points;
+            let (sin, cos) = rotation.to_radians().sin_cos();
+            for p in points {
+                let q = p - c.centre;
+                let local = Vector2::new(cos * q.x + sin * q.y, -sin * q.x + cos * q.y);
+                let unit = Vector2::new(local.x / c.radii.x, local.y / c.radii.y).norm();
+                prop_assert!((unit - 1.0).abs() < 1e-12, "{}: {}", d, unit);
+            }
+        }
+    }
+}

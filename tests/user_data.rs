@@ -189,7 +189,7 @@ fn the_svg_path_drawn_by_resvg_is_the_curve_sampled_by_the_library() {
         let fit = Fit::try_new(&points, method, closed).unwrap();
         let segments = fit.bezier(1e-5).unwrap();
         let width = 0.01;
-        let svg = splinelab::report::export::svg_document(&segments, width);
+        let svg = splinelab::report::export::svg_document(&segments, width).unwrap();
         let scale = 160.0;
         let (pixmap, to_pixel) = render(&svg, scale);
         let samples: Vec<(f64, f64)> = fit
@@ -611,4 +611,73 @@ fn a_closed_rings_repeated_first_point_is_dropped_and_coincidences_are_named() {
     )
     .unwrap();
     assert!(fit.dropped_ring_repeat());
+}
+
+/// The size limit holds while reading: a link to a device that reads without end is refused
+/// after `max + 1` bytes; an SVG document whose extent overflows is refused.
+#[test]
+fn limits_hold_while_reading_and_writing() {
+    use splinelab::report::user::outline::read_bytes_within;
+    let dir = tempfile::tempdir().unwrap();
+    let zero = dir.path().join("zero.csv");
+    std::os::unix::fs::symlink("/dev/zero", &zero).unwrap();
+    let err = read_bytes_within(&zero, 1 << 20).unwrap_err().to_string();
+    assert!(err.contains("more than the 1048576 bytes read"), "{err}");
+    let small = write_temp(dir.path(), "small.csv", b"0,0\n1,1\n");
+    assert_eq!(read_bytes_within(&small, 8).unwrap().len(), 8);
+    assert!(read_bytes_within(&small, 7).is_err());
+    // control points ±1.7e308 apart: the viewBox's width overflows
+    let far = [[
+        V::new(-1.7e308, 0.0),
+        V::new(-1e308, 1.0),
+        V::new(1e308, 1.0),
+        V::new(1.7e308, 0.0),
+    ]];
+    let err = splinelab::report::export::svg_document(&far, 1.0)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("viewBox"), "{err}");
+}
+
+/// Curves out join where they should: consecutive Bézier segments share their end points
+/// exactly, a closed curve's path is one subpath closed by `Z`, and its data points are
+/// written as they are (no ulp off), for every method, open and closed.
+#[test]
+fn bezier_segments_join_exactly() {
+    let pts: Vec<V> = [
+        (0.1, 0.0),
+        (1.3, 0.2),
+        (2.2, 1.7),
+        (1.1, 2.9),
+        (-0.3, 2.1),
+        (-0.7, 0.9),
+    ]
+    .iter()
+    .map(|&(x, y)| V::new(x, y))
+    .collect();
+    for method in [
+        Method::Angular,
+        Method::Cardinal { a: 0.3 },
+        Method::Cubic {
+            end: CubicEnd::Cyclic,
+        },
+        Method::BSpline { order: 5 },
+        Method::Linear,
+    ] {
+        for closed in [false, true] {
+            let fit = Fit::try_new(&pts, method, closed).unwrap();
+            let segments = fit.bezier(1e-6).unwrap();
+            for w in segments.windows(2) {
+                assert_eq!(w[0][3], w[1][0], "{method:?} closed={closed}");
+            }
+            let d = splinelab::report::export::svg_path(&segments);
+            assert_eq!(d.matches('M').count(), 1, "{method:?} closed={closed}: {d}");
+            assert_eq!(d.ends_with('Z'), closed, "{method:?} closed={closed}");
+            // the interpolating methods pass through their points: written exactly
+            if !matches!(method, Method::BSpline { .. }) {
+                let first = segments[0][0];
+                assert_eq!(first, fit.curve.point(fit.curve.domain().0));
+            }
+        }
+    }
 }

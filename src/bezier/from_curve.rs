@@ -28,7 +28,8 @@ pub type CubicSegment<const N: usize> = [SVector<f64, N>; 4];
 pub const MAX_HALVINGS: u32 = 16;
 
 /// The curve as cubic Bézier segments within `tolerance` (module docs), in the order of the
-/// parameter; consecutive segments share their end points.
+/// parameter; consecutive segments share their end points exactly (each evaluated once at
+/// the same parameter), and a closed curve's last end point is its first.
 ///
 /// # Errors
 /// [`Error::NotPositive`] for a tolerance that is not positive and finite;
@@ -52,8 +53,26 @@ pub fn cubic_segments<const N: usize, C: ParametricCurve<N> + ?Sized>(
         convert(curve, a, b, tolerance, 0, &mut out)?;
         a = b;
     }
+    // a closed curve's end is its start: the two evaluations may differ by rounding, which
+    // would leave the path open by an ulp
+    if let (Some(first), Some(last)) = (out.first().map(|s| s[0]), out.last().map(|s| s[3])) {
+        let scale = out
+            .iter()
+            .flat_map(|s| s.iter())
+            .map(|p| p.amax())
+            .fold(0.0f64, f64::max);
+        if last != first && (last - first).amax() <= CLOSING_ROUNDING * scale {
+            if let Some(s) = out.last_mut() {
+                s[3] = first;
+            }
+        }
+    }
     Ok(out)
 }
+
+/// Ends closer than this fraction of the curve's largest coordinate are one point (rounding of
+/// two evaluations of a closed curve's start and end).
+const CLOSING_ROUNDING: f64 = 64.0 * f64::EPSILON;
 
 /// Appends the segments of `[a, b]`, halving it while the check fails.
 fn convert<const N: usize, C: ParametricCurve<N> + ?Sized>(
@@ -65,7 +84,9 @@ fn convert<const N: usize, C: ParametricCurve<N> + ?Sized>(
     out: &mut Vec<CubicSegment<N>>,
 ) -> Result<()> {
     let at = |u: f64| -> Result<SVector<f64, N>> {
-        let p = curve.point(a + u * (b - a));
+        // the ends exactly (a + 1·(b − a) need not be b), so neighbours share their points
+        let t = if u == 1.0 { b } else { a + u * (b - a) };
+        let p = curve.point(t);
         for &x in p.iter() {
             crate::error::finite("curve point", x)?;
         }

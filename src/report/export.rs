@@ -201,7 +201,11 @@ pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
 /// A standalone SVG document drawing the path `d` ([`svg_path`]) with a stroke of
 /// `stroke_width` (in the curve's units), its `viewBox` the bounding box of `segments`' control
 /// points with a margin, and `y` pointing up as in the curve's coordinates.
-pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> String {
+///
+/// # Errors
+/// [`crate::Error::Overflow`] if the `viewBox` (the extent with its margin) is not finite:
+/// control points so far apart that their distance overflows.
+pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> Result<String> {
     let points = segments.iter().flatten();
     let (mut lo, mut hi) = (
         nalgebra::Vector2::repeat(f64::INFINITY),
@@ -217,7 +221,17 @@ pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> String {
     let margin = 0.05 * (hi - lo).amax().max(f64::MIN_POSITIVE) + stroke_width;
     let (x, y) = (lo.x - margin, lo.y - margin);
     let (w, h) = (hi.x - lo.x + 2.0 * margin, hi.y - lo.y + 2.0 * margin);
-    format!(
+    if let Some(&bad) = [x, y, w, h, 2.0 * y + h, stroke_width]
+        .iter()
+        .find(|v| !v.is_finite())
+    {
+        return Err(crate::Error::Overflow {
+            what: "the SVG document's viewBox (the curve's extent with its margin)",
+            value: bad,
+        }
+        .into());
+    }
+    Ok(format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\">\n<g transform=\"matrix(1 0 0 -1 0 {})\">\n<path d=\"{}\" fill=\"none\" stroke=\"black\" stroke-width=\"{}\"/>\n</g>\n</svg>\n",
         decimal(x),
         decimal(y),
@@ -226,7 +240,7 @@ pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> String {
         decimal(2.0 * y + h),
         svg_path(segments),
         decimal(stroke_width)
-    )
+    ))
 }
 
 /// Numbers separated by spaces, each the shortest decimal that reads back to it.

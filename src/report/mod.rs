@@ -49,6 +49,7 @@ pub mod user;
 
 pub use error::{Error, Result};
 pub use figure::Figure;
+pub use files::remove_temporaries_on_interrupt;
 pub use legend::Legend;
 pub use table::Table;
 

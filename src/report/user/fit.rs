@@ -157,7 +157,7 @@ impl Fit {
         }])
         .max(f64::MIN_POSITIVE);
         let segments = self.bezier(tolerance.unwrap_or(1e-4 * size))?;
-        Ok(crate::report::export::svg_document(&segments, 2e-3 * size))
+        crate::report::export::svg_document(&segments, 2e-3 * size)
     }
 
     /// The curve over its points (a B-spline's control polygon drawn), titled with the method.

@@ -79,18 +79,36 @@ impl FileKind {
 /// # Errors
 /// [`Error::Io`] if it cannot be read or is too large.
 pub fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    read_bytes_within(path, MAX_FILE_BYTES)
+}
+
+/// The bytes of `path`, refused beyond `max` bytes. The limit holds while reading (at most
+/// `max + 1` bytes are read), so a device or a pipe that reads without end (a link to
+/// `/dev/zero`, whose length the file system gives as 0) is refused too.
+///
+/// # Errors
+/// [`Error::Io`] if it cannot be read or is larger than `max` bytes.
+pub fn read_bytes_within(path: &Path, max: u64) -> Result<Vec<u8>> {
+    use std::io::Read;
     let io = |message: String| Error::Io {
         path: path.to_path_buf(),
         message,
     };
-    let meta = std::fs::metadata(path).map_err(|e| io(e.to_string()))?;
-    if meta.len() > MAX_FILE_BYTES {
+    let file = std::fs::File::open(path).map_err(|e| io(e.to_string()))?;
+    let len = file.metadata().map_err(|e| io(e.to_string()))?.len();
+    if len > max {
+        return Err(io(format!("{len} bytes: larger than the {max} bytes read")));
+    }
+    let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
+    file.take(max.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| io(e.to_string()))?;
+    if bytes.len() as u64 > max {
         return Err(io(format!(
-            "{} bytes: larger than the {MAX_FILE_BYTES} bytes read",
-            meta.len()
+            "more than the {max} bytes read (a device or a stream without end?)"
         )));
     }
-    std::fs::read(path).map_err(|e| io(e.to_string()))
+    Ok(bytes)
 }
 
 /// The text of `path` (UTF-8).
