@@ -5,7 +5,7 @@
 use crate::bspline::basis::BSplineBasis;
 use crate::bspline::curve::BSplineCurve;
 use crate::bspline::knots::KnotVector;
-use crate::curve::check_domain;
+use crate::curve::{check_domain, ParametricCurve};
 use crate::error::finite_points;
 use crate::error::{finite, Error, Result};
 use crate::interp::check_sites;
@@ -71,7 +71,10 @@ fn basis_row(basis: &BSplineBasis, x: f64, order: DerivativeOrder) -> Vec<f64> {
 /// is then the exact solution of a system within `10⁻¹⁰` of the given one, row by row, and
 /// its miss at the data is at most that much of the terms it sums (on knots `10⁻⁸` apart a
 /// natural or clamped cubic misses its data by about `10⁻⁹` of their size, as scipy's
-/// does). A larger residual — a solve that went wrong — is refused.
+/// does). A larger residual — a solve that went wrong — is refused. The curve is then checked
+/// where it matters, on itself: at every site it meets its value within
+/// [`COLLOCATION_MISS`] of the data's size, else [`Error::IllConditioned`] (the backward
+/// error alone lets huge control points miss the data by O(1)).
 ///
 /// # Errors
 /// [`Error::CountMismatch`] unless sites + conditions = basis functions and values match
@@ -181,8 +184,34 @@ pub fn interpolate<const N: usize>(
         };
     }
     crate::interp::accept_residual("B-spline collocation", worst)?;
-    BSplineCurve::try_new(basis, points)
+    let curve = BSplineCurve::try_new(basis, points)?;
+    // the backward error bounds the miss by the size of the terms the curve sums, which is
+    // no bound when the control points are huge: the curve itself must meet its data
+    let mut miss: f64 = 0.0;
+    for (&x, y) in sites.iter().zip(values) {
+        let m = (curve.point(x) - y).amax();
+        miss = if m.is_nan() { m } else { miss.max(m) };
+    }
+    // the values' size; with every value 0, the conditions' (in value units)
+    let data = crate::horner::max_norm(values);
+    let data = if data > 0.0 { data } else { scale };
+    let relative = if data > 0.0 { miss / data } else { miss };
+    if relative.is_nan() || relative > COLLOCATION_MISS {
+        return Err(Error::IllConditioned {
+            what: "B-spline collocation (the curve at its sites)",
+            residual: relative,
+            tolerance: COLLOCATION_MISS,
+        });
+    }
+    Ok(curve)
 }
+
+/// The most an `Ok` collocation curve misses its data, evaluated on the curve itself at the
+/// sites, relative to `max |yᵢ|` (when every value is 0, to the data scale of the
+/// equilibrated system, `max |bᵢ|`: derivative conditions in value units): `10⁻⁸`. A backward-stable solve of an ill-conditioned but solvable system (knots `10⁻⁸`
+/// apart beside unit intervals) misses by about `10⁻⁹`; a near-singular one solved with
+/// control points of `10¹⁶` misses by the data's own size, and is refused.
+pub const COLLOCATION_MISS: f64 = 1e-8;
 
 /// Checks `Nⱼ(xⱼ) ≠ 0` for every `j` (sorted sites in the domain, one per basis function).
 ///
