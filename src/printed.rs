@@ -37,3 +37,14 @@ pub(crate) fn decimal(c: f64) -> String {
         format!("{c}")
     }
 }
+
+/// `c` rounded to `digits` significant digits (at least 1), written as [`decimal`] writes the
+/// rounded value: `0.010000770459999999` to 6 digits is `0.0100008`. For text meant to be
+/// read (titles, headers); data keep every digit.
+pub(crate) fn rounded(c: f64, digits: usize) -> String {
+    if !c.is_finite() || c == 0.0 {
+        return decimal(c);
+    }
+    let text = format!("{:.*e}", digits.max(1) - 1, c);
+    decimal(text.parse::<f64>().unwrap_or(c))
+}

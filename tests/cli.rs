@@ -541,6 +541,10 @@ fn surface_exports_a_mesh_of_the_users_partition() {
         "--export",
         sphere.to_str().unwrap(),
     ]);
+    // no partition: the stated default, 8 x 8
+    let default = dir.path().join("default.obj");
+    let said = stdout_of(&["surface", "--torus", "--export", default.to_str().unwrap()]);
+    assert!(said.contains("8 x 8 bicubic Hermite patches"), "{said}");
     // refusals, nothing written
     for args in [
         &["surface", "--torus", "--partition", "0x4"][..],

@@ -185,7 +185,7 @@ pub struct FewestArgs {
 #[derive(Args, Debug)]
 #[command(
     group(ArgGroup::new("surface-kind").required(true).args(["torus", "sphere", "exp"])),
-    group(ArgGroup::new("cuts").required(true).args(["partition", "s_nodes"])),
+    group(ArgGroup::new("cuts").args(["partition", "s_nodes"])),
     after_help = "Examples:\n  splinelab surface --torus --partition 8x6 --export torus.obj\n  splinelab surface --sphere 2 --s-nodes 0,1,2,3,4,5,6.283185307179586 --t-nodes -1.5707963267948966,0,1.5707963267948966 --export sphere.stl"
 )]
 pub struct SurfaceArgs {
@@ -198,7 +198,8 @@ pub struct SurfaceArgs {
     /// The test surface (e^{s+t}, e^{s−t}, sinh s sinh t) on [0, 1]².
     #[arg(long)]
     exp: bool,
-    /// `NxM` equal patches of the surface's domain (N along s, M along t).
+    /// `NxM` equal patches of the surface's domain (N along s, M along t); 8x8 when neither
+    /// this nor the nodes are given.
     #[arg(long, value_name = "NxM")]
     partition: Option<String>,
     /// The nodes along s (increasing), instead of `--partition`.
@@ -420,6 +421,7 @@ pub fn surface(args: SurfaceArgs) -> anyhow::Result<()> {
     let spec = match (&args.partition, &args.s_nodes, &args.t_nodes) {
         (Some(p), _, _) => p.parse::<PartitionSpec>()?,
         (None, Some(s), Some(t)) => PartitionSpec::Nodes(s.clone(), t.clone()),
+        (None, None, None) => PartitionSpec::DEFAULT,
         _ => anyhow::bail!("give --partition NxM or --s-nodes and --t-nodes"),
     };
     let format = MeshFormat::of_path(&args.export, args.ascii)?;

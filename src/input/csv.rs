@@ -366,6 +366,11 @@ fn number(field: &str, line: usize, column: usize) -> Result<f64> {
             column,
             format!("not a finite number: {field:?}"),
         )),
+        Err(_) if field.contains('\n') => Err(parse_error(
+            line,
+            column,
+            format!("a quoted field runs on over lines, {field:?}: a quote left open?"),
+        )),
         Err(_) if field.contains(',') && field.replace(',', ".").parse::<f64>().is_ok() => {
             Err(parse_error(
                 line,

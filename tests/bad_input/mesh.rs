@@ -101,6 +101,56 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::Parse { .. }
             )
         }),
+        case("input::csv_real_forms_refused_in_place", || {
+            use splinelab::input::{points_from_csv, Columns};
+            // (text, line, column) of the refusal
+            for (text, line, column) in [
+                ("1,2\n3,\"4\n5,6\n", 2, 3),
+                ("x;y\n1,5;2\n", 2, 1),
+                ("1,abc\n2,3\n", 1, 3),
+                ("\"x\",\"y\"\n\"1\",\"nan\"\n", 2, 5),
+                ("1,2\n\"3\n\",x\n", 3, 3),
+                ("1;2;\n3;4;5\n", 2, 5),
+                ("\u{feff}x,y\r\n1,2\r\n3,\r\n", 3, 3),
+            ] {
+                match points_from_csv::<2>(text, &Columns::First) {
+                    Err(Error::Parse {
+                        line: l, column: c, ..
+                    }) if (l, c) == (line, column) => {}
+                    other => {
+                        return Err(format!(
+                            "{text:?}: {other:?}, expected line {line}, column {column}"
+                        ))
+                    }
+                }
+            }
+            Ok(())
+        }),
+        case("user::file_size_limit_while_reading", || {
+            use splinelab::report::user::outline::read_bytes_within;
+            let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+            let zero = dir.path().join("zero.svg");
+            std::os::unix::fs::symlink("/dev/zero", &zero).map_err(|e| e.to_string())?;
+            expect_err!(
+                read_bytes_within(&zero, 4096),
+                splinelab::report::Error::Io { .. }
+            )
+        }),
+        case("user::formulas_checked_over_their_range", || {
+            use splinelab::report::user::fit::{Fit, FormulaStyle};
+            // an inflection piece prints two arcs, each checked on its own range
+            let pts: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 0.0), (2.0, 1.0), (3.0, 1.0)]
+                .iter()
+                .map(|&(x, y)| v2(x, y))
+                .collect();
+            let fit =
+                Fit::try_new(&pts, splinelab::Method::Angular, false).map_err(|e| e.to_string())?;
+            let text = fit
+                .formulas(FormulaStyle::Plain)
+                .map_err(|e| e.to_string())?;
+            ensure!(text.contains("arc 2 of 2"), "{text}");
+            Ok(())
+        }),
         case("input::svg_arcs_at_extremes", || {
             use splinelab::input::contours_from_svg_path;
             // radii from tiny to huge, NaN-free: a finite polyline or a typed error, bounded

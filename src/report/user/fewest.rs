@@ -353,13 +353,40 @@ pub fn table(id: &str, found: &Fewest) -> Result<Table> {
         id,
         format!(
             "The fewest points per method within {} ({:.3} % of the size {})",
-            crate::printed::decimal(found.tolerance),
+            crate::printed::rounded(found.tolerance, 6),
             100.0 * found.tolerance / found.size,
-            crate::printed::decimal(found.size)
+            crate::printed::rounded(found.size, 6)
         ),
         crate::report::record::frame_of(id, &rows)?,
     )
     .note("points: as seed 004 counts them (a closed curve's repeats included), summed over the contours; error_pct: the largest symmetric Hausdorff distance between a contour and its curve, in % of the outline's size (the larger side of its bounding box); the search is Table I's (interp::choice::search)."))
+}
+
+/// The whole outline in one panel: every contour panel's series drawn together, each label
+/// once.
+fn whole_outline(
+    panels: &[crate::report::plot2d::Panel],
+    family: &Family,
+) -> crate::report::plot2d::Panel {
+    let mut whole = crate::report::plot2d::Panel::new(
+        format!("the whole outline: {}", family_name(*family)),
+        "",
+        "",
+    )
+    .equal();
+    let mut seen = std::collections::HashSet::new();
+    for panel in panels {
+        for series in &panel.series {
+            let mut series = series.clone();
+            if let Some(label) = &series.label {
+                if !seen.insert(label.clone()) {
+                    series.label = None;
+                }
+            }
+            whole.series.push(series);
+        }
+    }
+    whole
 }
 
 /// A family's name on the command line and in tables.
@@ -373,8 +400,8 @@ pub fn family_name(family: Family) -> &'static str {
     }
 }
 
-/// One figure per method: a panel per contour, the curve over the outline with its points
-/// ([`draw::choice_panel`]).
+/// One figure per method: the whole outline in one panel (for more than one contour), then a
+/// panel per contour, the curve over the outline with its points ([`draw::choice_panel`]).
 ///
 /// # Errors
 /// As [`draw::choice_panel`].
@@ -409,6 +436,10 @@ pub fn figures(found: &Fewest) -> Result<Vec<(Family, Figure)>> {
                     Ok(panel)
                 })
                 .collect::<Result<Vec<_>>>()?;
+            let mut panels = panels;
+            if panels.len() > 1 {
+                panels.insert(0, whole_outline(&panels, &m.family));
+            }
             let n = panels.len();
             let cols = n.min(3);
             let rows = n.div_ceil(cols.max(1));

@@ -40,6 +40,9 @@ pub struct Fit {
     pub curve: Interpolant,
 }
 
+/// The most point markers a fit's figure draws (beyond, every k-th point).
+pub const MAX_MARKERS: usize = 400;
+
 /// How [`Fit::formulas`] writes the formulas.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FormulaStyle {
@@ -181,13 +184,32 @@ impl Fit {
         let curve = self
             .curve
             .polyline(pieces.saturating_mul(64).min(1 << 16))?;
-        let mut panel = Panel::new("", "x", "y")
-            .equal()
-            .with(Series::line("curve", xy(&curve), LINE_PALETTE[0]).width(3));
+        // markers that leave the curve visible: smaller as the points grow many, and at most
+        // MAX_MARKERS of them (every k-th point, said in the legend)
+        let step = drawn.len().div_ceil(MAX_MARKERS).max(1);
+        let marked: Vec<Vector2<f64>> = drawn.iter().step_by(step).copied().collect();
+        let size = match drawn.len() {
+            0..=100 => 5,
+            101..=1000 => 3,
+            _ => 2,
+        };
+        let label = if step > 1 {
+            format!("points (one in {step} of {} marked)", drawn.len())
+        } else {
+            "points".to_string()
+        };
+        let mut panel = Panel::new("", "x", "y").equal();
         if matches!(self.method, Method::BSpline { .. }) {
             panel = panel.with(Series::line("control polygon", xy(&drawn), GREY).width(1));
         }
-        let panel = panel.with(Series::line("points", xy(&drawn), INK).styled(Style::Crosses(5)));
+        // the curve drawn over the markers
+        let panel =
+            panel
+                .with(Series::line(label, xy(&marked), INK).styled(Style::Crosses(size)))
+                .with(
+                    Series::line("curve", xy(&curve), LINE_PALETTE[0])
+                        .width(if drawn.len() > 1000 { 2 } else { 3 }),
+                );
         Ok(Figure::from(Figure2d::new(title, vec![panel], (1, 1))).with_size(800, 640))
     }
 

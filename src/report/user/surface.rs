@@ -62,6 +62,11 @@ pub enum PartitionSpec {
     Nodes(Vec<f64>, Vec<f64>),
 }
 
+impl PartitionSpec {
+    /// The partition used when none is given: 8 × 8 equal patches.
+    pub const DEFAULT: PartitionSpec = PartitionSpec::Uniform(8, 8);
+}
+
 impl FromStr for PartitionSpec {
     type Err = crate::Error;
 
