@@ -394,7 +394,19 @@ fn fit_writes_samples_figures_and_the_svg_path_and_prints_formulas() {
 fn bad_input_files_fail_with_their_line_and_column_and_write_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out");
-    let cases: [(&str, &[u8], &[&str], &str); 6] = [
+    let cases: [(&str, &[u8], &[&str], &str); 8] = [
+        (
+            "g.svg",
+            b"<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 10 10'>\n  <rect width='4' height='4'/>\n  <text x='1' y='8'>A</text>\n</svg>",
+            &["fewest"],
+            "line 3, column 3: a <text> element: text is not read as an outline",
+        ),
+        (
+            "h.csv",
+            b"x;y\n0;0\n1,5;2\n",
+            &["fit", "--method", "linear"],
+            "line 3, column 1: not a number: \"1,5\" (a decimal comma",
+        ),
         (
             "a.csv",
             b"x,y\n0,0\n1,oops\n",
