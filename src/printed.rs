@@ -41,6 +41,7 @@ pub(crate) fn decimal(c: f64) -> String {
 /// `c` rounded to `digits` significant digits (at least 1), written as [`decimal`] writes the
 /// rounded value: `0.010000770459999999` to 6 digits is `0.0100008`. For text meant to be
 /// read (titles, headers); data keep every digit.
+#[cfg(feature = "report")]
 pub(crate) fn rounded(c: f64, digits: usize) -> String {
     if !c.is_finite() || c == 0.0 {
         return decimal(c);

@@ -1,7 +1,7 @@
 //! Outlines as polylines: the one place where lines, Bézier curves and elliptical arcs become
 //! the points of contours, within a stated distance. The SVG path-data reader
 //! ([`super::svg_path`]) and the SVG document reader (`super::svg_document`) both draw
-//! through a [`Flattener`].
+//! through one flattener (a crate-private type).
 //!
 //! - **Lines** are their end points.
 //! - **Cubic Béziers** are halved at `u = ½` (de Casteljau) until both inner control points

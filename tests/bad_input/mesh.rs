@@ -126,31 +126,6 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("user::file_size_limit_while_reading", || {
-            use splinelab::report::user::outline::read_bytes_within;
-            let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
-            let zero = dir.path().join("zero.svg");
-            std::os::unix::fs::symlink("/dev/zero", &zero).map_err(|e| e.to_string())?;
-            expect_err!(
-                read_bytes_within(&zero, 4096),
-                splinelab::report::Error::Io { .. }
-            )
-        }),
-        case("user::formulas_checked_over_their_range", || {
-            use splinelab::report::user::fit::{Fit, FormulaStyle};
-            // an inflection piece prints two arcs, each checked on its own range
-            let pts: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 0.0), (2.0, 1.0), (3.0, 1.0)]
-                .iter()
-                .map(|&(x, y)| v2(x, y))
-                .collect();
-            let fit =
-                Fit::try_new(&pts, splinelab::Method::Angular, false).map_err(|e| e.to_string())?;
-            let text = fit
-                .formulas(FormulaStyle::Plain)
-                .map_err(|e| e.to_string())?;
-            ensure!(text.contains("arc 2 of 2"), "{text}");
-            Ok(())
-        }),
         case("input::svg_arcs_at_extremes", || {
             use splinelab::input::contours_from_svg_path;
             // radii from tiny to huge, NaN-free: a finite polyline or a typed error, bounded
@@ -214,6 +189,31 @@ fn report_cases() -> Vec<Case> {
 fn report_cases() -> Vec<Case> {
     use splinelab::report::export;
     vec![
+        case("user::file_size_limit_while_reading", || {
+            use splinelab::report::user::outline::read_bytes_within;
+            let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+            let zero = dir.path().join("zero.svg");
+            std::os::unix::fs::symlink("/dev/zero", &zero).map_err(|e| e.to_string())?;
+            expect_err!(
+                read_bytes_within(&zero, 4096),
+                splinelab::report::Error::Io { .. }
+            )
+        }),
+        case("user::formulas_checked_over_their_range", || {
+            use splinelab::report::user::fit::{Fit, FormulaStyle};
+            // an inflection piece prints two arcs, each checked on its own range
+            let pts: Vec<Vector2<f64>> = [(0.0, 0.0), (1.0, 0.0), (2.0, 1.0), (3.0, 1.0)]
+                .iter()
+                .map(|&(x, y)| v2(x, y))
+                .collect();
+            let fit =
+                Fit::try_new(&pts, splinelab::Method::Angular, false).map_err(|e| e.to_string())?;
+            let text = fit
+                .formulas(FormulaStyle::Plain)
+                .map_err(|e| e.to_string())?;
+            ensure!(text.contains("arc 2 of 2"), "{text}");
+            Ok(())
+        }),
         case("mesh::stl_refuses_what_a_float_cannot_hold", || {
             let s =
                 FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s * 1e300, t, s * t));
