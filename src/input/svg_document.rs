@@ -24,7 +24,8 @@
 //!   the parser's curves.
 //! - **Refused** with [`Error::Parse`] at the line and column of the element: a `<text>`
 //!   (text is not read as an outline: convert it to paths in the drawing program, e.g.
-//!   Inkscape's *Path ▸ Object to Path*), an `<image>` or `<foreignObject>` (no outline), path
+//!   Inkscape's *Path ▸ Object to Path*), an `<image>` or `<foreignObject>` (no outline), a
+//!   `<use>` of another file (not loaded), path
 //!   data, `points`, a `transform` or a shape's length that cannot be read (a viewer draws a
 //!   path up to its first error and skips a bad transform; a reader of outlines refuses
 //!   them), a `mask` on drawn content, a `clip-path` that cuts the drawn outline (a clip that
@@ -655,6 +656,17 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
             }
             "foreignObject" => {
                 return Err(refuse("a <foreignObject> has no outline".into()))
+            }
+            "use" => {
+                let href = node
+                    .attribute(("http://www.w3.org/1999/xlink", "href"))
+                    .or_else(|| node.attribute("href"))
+                    .unwrap_or("");
+                if !href.trim_start().starts_with('#') && !href.trim().is_empty() {
+                    return Err(refuse(format!(
+                        "a <use> of another file ({href:?}) is not read: copy what it shows into this document"
+                    )));
+                }
             }
             _ => {}
         }

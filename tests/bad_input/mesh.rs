@@ -334,6 +334,7 @@ fn report_cases() -> Vec<Case> {
                 (format!("<svg {NS}><text>a</text><rect width='1' height='1'/></svg>"), "<text>"),
                 (format!("<svg {NS}><image width='1' height='1'/></svg>"), "<image>"),
                 (format!("<svg {NS}><foreignObject/></svg>"), "<foreignObject>"),
+                (format!("<svg {NS}><use href='icons.svg#home'/><rect width='1' height='1'/></svg>"), "another file"),
                 (format!("<svg {NS}><rect width='1' height='1' transform='rotate(30'/></svg>"), "transform"),
                 (format!("<svg {NS}><polygon points='0 0 1 1 2'/></svg>"), "odd count"),
                 (format!("<svg {NS}><polygon points='0 0 1 x'/></svg>"), "cannot be read"),
