@@ -19,3 +19,16 @@ pub use svg_document::{
     contours_from_svg_document, read_svg_document, DrawnPath, FillRule, Stroke, SvgOutline,
 };
 pub use svg_path::contours_from_svg_path;
+
+/// The 1-based line and column (in characters) of byte `at` of `text` (clamped to the text, and
+/// back to a character boundary): where a reader places what it cannot read.
+pub(crate) fn position(text: &str, at: usize) -> (usize, usize) {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    let before = &text[..at];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}

@@ -33,7 +33,8 @@
 //!   nothing drawn. Filters (blur, shadows) are not read: they change colours, not outlines.
 
 use super::flatten::{Contour, Flattener};
-use super::svg_path::{contours_from_svg_path, position};
+use super::position;
+use super::svg_path::contours_from_svg_path;
 use crate::error::{Error, Result};
 use nalgebra::{Matrix2, Vector2};
 use std::str::FromStr;
@@ -133,11 +134,7 @@ pub struct DrawnPath {
 /// # Errors
 /// As [`read_svg_document`].
 pub fn contours_from_svg_document(text: &str, tolerance: f64) -> Result<Vec<Contour>> {
-    Ok(read_svg_document(text, tolerance)?
-        .paths
-        .into_iter()
-        .flat_map(|p| p.contours)
-        .collect())
+    Ok(read_svg_document(text, tolerance)?.into_contours())
 }
 
 /// An SVG document's drawn paths and the distance within which they hold.
@@ -154,6 +151,13 @@ pub struct SvgOutline {
     /// The bound of the parser's approximation of arcs alone (0 without arcs): the part of
     /// `within` that no flattening tolerance reduces.
     pub arcs: f64,
+}
+
+impl SvgOutline {
+    /// Every drawn path's contours, in document order.
+    pub fn into_contours(self) -> Vec<Contour> {
+        self.paths.into_iter().flat_map(|p| p.contours).collect()
+    }
 }
 
 /// Every path of an SVG document a viewer draws, with its fill and stroke (module docs),
@@ -539,16 +543,11 @@ impl Reader<'_, '_> {
             return None;
         }
         let url = format!("#{id})");
+        let names_it = |v: &str| v.replace(['"', '\'', ' '], "").contains(&url);
         let mut found = self.doc.descendants().filter(|n| {
-            n.is_element()
-                && [n.attribute("clip-path"), n.attribute("style")]
-                    .iter()
-                    .flatten()
-                    .any(|v| v.contains("clip-path") || v.starts_with("url("))
-                && [n.attribute("clip-path"), n.attribute("style")]
-                    .iter()
-                    .flatten()
-                    .any(|v| v.replace(['"', '\'', ' '], "").contains(&url))
+            n.attribute("clip-path").is_some_and(names_it)
+                || n.attribute("style")
+                    .is_some_and(|v| v.contains("clip-path") && names_it(v))
         });
         let first = found.next()?;
         found.next().is_none().then_some(first)

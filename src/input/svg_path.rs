@@ -21,6 +21,7 @@
 //!   tolerance, a point beyond [`crate::error::MAX_COORDINATE`].
 
 use super::flatten::{Contour, Flattener, SvgArc};
+use super::position;
 use crate::error::{Error, Result};
 use nalgebra::Vector2;
 use svgtypes::PathSegment;
@@ -287,16 +288,4 @@ pub(crate) fn place(e: Error, d: &str, at: usize) -> Error {
         }
         other => other,
     }
-}
-
-/// The 1-based line and column (in characters) of byte `at` of `text`.
-pub(crate) fn position(text: &str, at: usize) -> (usize, usize) {
-    let mut at = at.min(text.len());
-    while !text.is_char_boundary(at) {
-        at -= 1;
-    }
-    let before = &text[..at];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, column)
 }

@@ -120,8 +120,7 @@ pub fn read_text(path: &Path) -> Result<String> {
     String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         let text = String::from_utf8_lossy(valid);
-        let line = text.matches('\n').count() + 1;
-        let column = text.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        let (line, column) = crate::input::position(&text, text.len());
         crate::Error::Parse {
             what: "input file",
             line,
@@ -190,17 +189,9 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                     .into())
                 }
                 Some(t) => t,
-                None => {
-                    let all: Vec<Contour> =
-                        coarse.paths.into_iter().flat_map(|p| p.contours).collect();
-                    FLATTEN_FRACTION * size(&all)
-                }
+                None => FLATTEN_FRACTION * size(&coarse.into_contours()),
             };
-            Ok(read_svg_document(&text, tolerance)?
-                .paths
-                .into_iter()
-                .flat_map(|p| p.contours)
-                .collect())
+            Ok(read_svg_document(&text, tolerance)?.into_contours())
         }
         FileKind::Font => {
             let ch = options.glyph.ok_or(crate::Error::Parse {
