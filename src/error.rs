@@ -96,6 +96,14 @@ pub enum Error {
         /// The predecessor's value.
         prev: f64,
     },
+    /// A parameter must be finite and at least 0.
+    #[error("{what} must be finite and at least 0, got {value}")]
+    Negative {
+        /// Which parameter.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
     /// A shape parameter (a radius, say) must be positive and finite.
     #[error("{what} must be positive and finite, got {value}")]
     NotPositive {
@@ -431,6 +439,15 @@ pub(crate) fn positive(what: &'static str, value: f64) -> Result<f64> {
         Ok(value)
     } else {
         Err(Error::NotPositive { what, value })
+    }
+}
+
+/// Checks that `value` is finite and at least 0.
+pub(crate) fn non_negative(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::Negative { what, value })
     }
 }
 

@@ -11,7 +11,8 @@
 //! the shape's ends (`P₀ = Q₀`, `P_n = Q_{m−1}`; a closed shape has `Q_{m−1} = Q₀`, so
 //! the polygon closes on itself, "first vertex = last" as the paper draws closed figures), and
 //! the inner vertices minimise `Σⱼ ‖C(tⱼ) − Qⱼ‖²` — a linear least-squares problem in
-//! `P₁ … P_{n−1}`, solved by SVD. The parameters start at normalised chord length and are
+//! `P₁ … P_{n−1}`, solved by QR (Givens rotations, row by row: a row has a few non-zeros), its
+//! conditioning read from the singular values of the triangular factor (those of the system). The parameters start at normalised chord length and are
 //! then re-projected: each `tⱼ` moves by Newton steps on `(C(t) − Qⱼ)·C′(t) = 0` to the
 //! nearest point of the current curve (Hoschek's parameter correction), and the control points
 //! are solved again minimising the squared distance to each foot point's tangent line plus
@@ -230,9 +231,12 @@ fn solve_polygon<const N: usize>(
     points[n - 1] = last;
     if n > 2 {
         let inner = n - 2;
-        let rows = crate::error::size_product("fit rows", shape.len(), N)?;
-        let mut a = DMatrix::<f64>::zeros(rows, inner * N);
-        let mut rhs = DMatrix::<f64>::zeros(rows, 1);
+        crate::error::size_product("fit rows", shape.len(), N)?;
+        let cols = inner * N;
+        // the triangular factor R of A = QR and Qᵀb beside it, one row of A at a time by
+        // Givens rotations (A has a few non-zeros a row: its B-spline values)
+        let mut r = DMatrix::<f64>::zeros(cols, cols + 1);
+        let mut row = vec![0.0; cols + 1];
         // Lⱼ = I − (1 − √w) TTᵀ, so LⱼᵀLⱼ = Mⱼ
         let shrink = 1.0 - TANGENTIAL_WEIGHT.sqrt();
         for (j, (&tj, q)) in t.iter().zip(shape).enumerate() {
@@ -241,29 +245,35 @@ fn solve_polygon<const N: usize>(
                 None => SMatrixN::<N>::identity(),
             };
             let (span, values) = basis.nonzero(tj);
-            let mut r = *q;
+            let mut res = *q;
             for (k, &v) in values.iter().enumerate() {
                 let i = span - basis.degree() + k;
                 if i == 0 {
-                    r -= first * v;
+                    res -= first * v;
                 } else if i == n - 1 {
-                    r -= last * v;
-                } else {
-                    for row in 0..N {
-                        for col in 0..N {
-                            a[(j * N + row, (i - 1) * N + col)] += l[(row, col)] * v;
-                        }
-                    }
+                    res -= last * v;
                 }
             }
-            let lr = l * r;
-            for row in 0..N {
-                rhs[(j * N + row, 0)] = lr[row];
+            let lr = l * res;
+            for out in 0..N {
+                row.fill(0.0);
+                let mut lo = cols;
+                for (k, &v) in values.iter().enumerate() {
+                    let i = span - basis.degree() + k;
+                    if i > 0 && i < n - 1 {
+                        for c in 0..N {
+                            row[(i - 1) * N + c] += l[(out, c)] * v;
+                        }
+                        lo = lo.min((i - 1) * N);
+                    }
+                }
+                row[cols] = lr[out];
+                rotate_into(&mut r, &mut row, lo);
             }
         }
-        let svd = a.svd(true, true);
-        let (lo, hi) = svd
-            .singular_values
+        let triangle = r.columns(0, cols).into_owned();
+        let singular = triangle.singular_values();
+        let (lo, hi) = singular
             .iter()
             .fold((f64::INFINITY, 0.0f64), |(lo, hi), &s| {
                 (lo.min(s), hi.max(s))
@@ -275,11 +285,13 @@ fn solve_polygon<const N: usize>(
                 tolerance: 1e-12,
             });
         }
-        let x = svd.solve(&rhs, 0.0).map_err(|_| Error::IllConditioned {
-            what: "B-spline fit solve",
-            residual: f64::NAN,
-            tolerance: 1e-12,
-        })?;
+        let x = triangle
+            .solve_upper_triangular(&r.columns(cols, 1).into_owned())
+            .ok_or(Error::IllConditioned {
+                what: "B-spline fit solve",
+                residual: f64::NAN,
+                tolerance: 1e-12,
+            })?;
         for i in 0..inner {
             points[i + 1] = SVector::from_fn(|c, _| x[(i * N + c, 0)]);
         }
@@ -289,3 +301,24 @@ fn solve_polygon<const N: usize>(
 }
 
 type SMatrixN<const N: usize> = nalgebra::SMatrix<f64, N, N>;
+
+/// Adds `row` (its first non-zero at or after `lo`, its right-hand side last) to the
+/// triangular factor `r` by Givens rotations, each zeroing one entry of `row` against the
+/// diagonal of `r` (an empty row of `r` takes the row over).
+fn rotate_into(r: &mut DMatrix<f64>, row: &mut [f64], lo: usize) {
+    let cols = r.nrows();
+    for c in lo..cols {
+        if row[c] == 0.0 {
+            continue;
+        }
+        let (a, b) = (r[(c, c)], row[c]);
+        let rho = a.hypot(b);
+        let (cs, sn) = (a / rho, b / rho);
+        for k in c..=cols {
+            let (x, y) = (r[(c, k)], row[k]);
+            r[(c, k)] = cs * x + sn * y;
+            row[k] = cs * y - sn * x;
+        }
+        row[c] = 0.0;
+    }
+}

@@ -165,9 +165,9 @@ pub struct FewestArgs {
     /// Error evaluations per count and start, per free coordinate.
     #[arg(long, default_value_t = fewest::DEFAULT_BUDGET)]
     budget: usize,
-    /// Table I's search: 40 evaluations per coordinate, every count below the answer
-    /// searched in full, up to 40 points (slower; `--shape` always uses it, so its counts
-    /// are Table I's).
+    /// After the default search, Table I's search started from its answer (never worse): 40
+    /// evaluations per coordinate, every count below the answer searched in full (slower;
+    /// `--shape` uses Table I's search alone, so its counts are Table I's).
     #[arg(long)]
     thorough: bool,
     /// Output folder.
@@ -351,14 +351,18 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
         (None, None) => anyhow::bail!("give an OUTLINE file or --shape"),
     };
     let families: Vec<Family> = args.method.iter().map(|m| m.family()).collect();
-    let options = if args.thorough || args.shape.is_some() {
-        fewest::table_i_options()
+    let first = SearchOptions {
+        max_points: args.max_points,
+        budget_per_coordinate: args.budget,
+        ..fewest::default_options()
+    };
+    let stages = if args.shape.is_some() {
+        vec![fewest::table_i_options()]
+    } else if args.thorough {
+        let then = fewest::thorough_options(&first);
+        vec![first, then]
     } else {
-        SearchOptions {
-            max_points: args.max_points,
-            budget_per_coordinate: args.budget,
-            ..fewest::default_options()
-        }
+        vec![first]
     };
     let bar = Bar {
         started: Instant::now(),
@@ -376,7 +380,7 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
                 }
             });
         }
-        let found = fewest::fewest(&outline, tolerance, &families, &options, &|p| {
+        let found = fewest::fewest_in_stages(&outline, tolerance, &families, &stages, &|p| {
             bar.done.store(p.done, Ordering::Relaxed);
             bar.draw(Some(p));
         });
@@ -388,6 +392,13 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
     }
     let found = found?;
     let table = fewest::table(&format!("{name}-fewest"), &found)?;
+    let points = args.out.join(format!("{name}-outline.csv"));
+    std::fs::create_dir_all(&args.out)?;
+    splinelab::report::table::write_csv(
+        &fewest::outline_frame(&format!("{name}-outline"), &outline)?,
+        &points,
+    )?;
+    crate::say(format_args!("wrote {}", points.display()))?;
     let figures = fewest::figures(&found)?;
     for path in table.write(&args.out)? {
         crate::say(format_args!("wrote {}", path.display()))?;

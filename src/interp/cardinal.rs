@@ -66,8 +66,9 @@ impl<const N: usize> CardinalSpline<N> {
     /// # Errors
     /// [`Error::TooFewPoints`] below 4 points; [`Error::TooLarge`] beyond
     /// [`crate::error::MAX_ELEMENTS`]; [`Error::NonFinite`] or [`Error::CoordinateTooLarge`] for
-    /// a point; [`Error::NotPositive`] unless `a` is finite and positive (`a = 0` is the
-    /// polygon itself — use [`crate::PiecewiseLinear`]); [`Error::CoordinateTooLarge`] if a
+    /// a point; [`Error::Negative`] unless `a` is finite and at least 0 (`a = 0` gives zero
+    /// tangents: the curve is the polygon of the interpolated points, each side traced from
+    /// rest to rest); [`Error::CoordinateTooLarge`] if a
     /// derived tangent `a (Pᵢ₊₁ − Pᵢ₋₁)` exceeds [`crate::error::MAX_COORDINATE`].
     pub fn try_new(points: Vec<SVector<f64, N>>, a: f64) -> Result<Self> {
         crate::error::size("cardinal spline points", points.len())?;
@@ -79,7 +80,7 @@ impl<const N: usize> CardinalSpline<N> {
             });
         }
         finite_points("cardinal spline point", &points)?;
-        crate::error::positive("cardinal spline parameter a", a)?;
+        crate::error::non_negative("cardinal spline parameter a", a)?;
         let tangents: Vec<SVector<f64, N>> = points.windows(3).map(|w| (w[2] - w[0]) * a).collect();
         let inner = points[1..points.len() - 1].to_vec();
         let knots = (0..inner.len()).map(|k| k as f64).collect();

@@ -183,6 +183,22 @@ impl SegmentTree {
     /// [`Error::CoordinateTooLarge`] for a coordinate; [`Error::TooLarge`] beyond
     /// [`crate::error::MAX_ELEMENTS`] points.
     pub fn new(points: &[Vector2<f64>]) -> Result<Self> {
+        Self::build(points, true)
+    }
+
+    /// The tree of the polyline through `points` split by position along it rather than in
+    /// space: no sorting, so cheaper to build, and as good for a polyline whose consecutive
+    /// segments lie near each other (a curve sampled densely). Its distances are
+    /// [`SegmentTree::new`]'s exactly (both are the minimum over the segments).
+    ///
+    /// # Errors
+    /// As [`SegmentTree::new`].
+    pub fn along(points: &[Vector2<f64>]) -> Result<Self> {
+        Self::build(points, false)
+    }
+
+    /// The tree, its nodes split at the median in space (`spatial`) or by position.
+    fn build(points: &[Vector2<f64>], spatial: bool) -> Result<Self> {
         crate::error::size("polyline points", points.len())?;
         if points.is_empty() {
             return Err(Error::TooFewPoints {
@@ -217,8 +233,10 @@ impl SegmentTree {
             let mid = start + (end - start) / 2;
             let pts = &tree.points;
             let key = |i: &u32| pts[*i as usize][axis] + pts[*i as usize + 1][axis];
-            tree.order[start..end]
-                .select_nth_unstable_by(mid - start, |i, j| key(i).total_cmp(&key(j)));
+            if spatial {
+                tree.order[start..end]
+                    .select_nth_unstable_by(mid - start, |i, j| key(i).total_cmp(&key(j)));
+            }
             let left = tree.nodes.len();
             let (lb, rb) = (tree.bounds(start, mid), tree.bounds(mid, end));
             tree.nodes.push(lb);
@@ -258,7 +276,7 @@ impl SegmentTree {
     /// It is finite for `p` within [`crate::error::MAX_COORDINATE`]; beyond, or for a NaN
     /// coordinate, it is unspecified (`+∞` or NaN): check query points first.
     pub fn distance(&self, p: Vector2<f64>) -> f64 {
-        self.nearest(p, 0.0)
+        self.nearest(p, 0.0).0
     }
 
     /// The distance from `p` to the polyline, except that the search may stop as soon as it
@@ -269,7 +287,9 @@ impl SegmentTree {
     /// underflow), and measures every segment that could tie or beat the best so far with
     /// the accurate [`segment_distance`]: the result is the brute-force minimum of
     /// [`segment_distance`] over the segments.
-    fn nearest(&self, p: Vector2<f64>, stop: f64) -> f64 {
+    ///
+    /// Also returns the segment of the distance returned.
+    fn nearest(&self, p: Vector2<f64>, stop: f64) -> (f64, usize) {
         let size = self.extent.max(p.amax());
         let u = power_near(size);
         let k = 1.0 / u;
@@ -279,6 +299,7 @@ impl SegmentTree {
         // covers the box distances' rounding
         let reach = CHEAP_REACH * f64::EPSILON * (size * k);
         let mut best = f64::INFINITY;
+        let mut at = 0;
         // boxes and segments farther than this are skipped: (best (1 + slack) + reach)²
         let mut limit = f64::INFINITY;
         // depth ≤ log₂(segments) + 1 < 64 for any size below MAX_ELEMENTS
@@ -302,17 +323,18 @@ impl SegmentTree {
                     // the caller needs no exact value
                     let c = c2.sqrt() + reach;
                     if c < stop {
-                        return c * u;
+                        return (c * u, i as usize);
                     }
                     let d = segment_distance(p, a, b) * k;
                     if d < best {
                         best = d;
+                        at = i as usize;
                         let r = best * (1.0 + PRUNE_SLACK) + reach;
                         limit = r * r;
                     }
                 }
                 if best < stop {
-                    return best * u;
+                    return (best * u, at);
                 }
                 continue;
             }
@@ -327,49 +349,61 @@ impl SegmentTree {
             stack[top + 1] = near;
             top += 2;
         }
-        best * u
+        (best * u, at)
     }
 
     /// The one-sided distance `maxᵢ min_{s} |from[i] − s|` from the points `from` to the
     /// polyline, and the index of a point where it is reached (`None` for no point). The
-    /// points are visited in a fixed scrambled order, which makes the early break effective
-    /// on ordered input; the result does not depend on it.
+    /// points are visited spread out first, then in order with the previous point's nearest
+    /// segment tried first ([`SegmentTree::farthest_below`]), which makes the early break
+    /// effective on a curve's samples; the result does not depend on it.
     pub fn farthest(&self, from: &[Vector2<f64>]) -> (f64, Option<usize>) {
+        self.farthest_below(from, f64::INFINITY)
+    }
+
+    /// As [`SegmentTree::farthest`], except that the search stops as soon as the distance
+    /// found reaches `limit`: the result is exact when it is below `limit`, and otherwise a
+    /// distance at least `limit` (a search comparing against its best so far needs no more).
+    pub fn farthest_below(&self, from: &[Vector2<f64>], limit: f64) -> (f64, Option<usize>) {
         let n = from.len();
         let mut max = 0.0;
         let mut at = None;
-        // a stride coprime with n visits every index once
-        let stride = scramble_stride(n);
-        let mut i = 0;
-        for _ in 0..n {
-            let d = self.nearest(from[i], max);
+        // every SPREAD-th point first, so that the largest distance is near its end early;
+        // then the others in order, each tried first on the segments where its predecessor
+        // found one nearer than the largest so far (consecutive points of a curve lie near
+        // each other): a point nearer than that changes nothing, whichever segment shows it
+        let last = self.points.len() - 2;
+        let mut hint: Option<usize> = None;
+        let spread = (0..n).step_by(SPREAD);
+        let rest = (0..n).filter(|i| i % SPREAD != 0);
+        for i in spread.chain(rest) {
+            let p = from[i];
+            if at.is_some() && i % SPREAD != 0 {
+                if let Some(h) = hint {
+                    let near = (h..=(h + 1).min(last))
+                        .find(|&s| segment_distance(p, self.points[s], self.points[s + 1]) < max);
+                    if near.is_some() {
+                        hint = near;
+                        continue;
+                    }
+                }
+            }
+            let (d, s) = self.nearest(p, max);
+            hint = Some(s);
             if d > max || at.is_none() {
                 max = d;
                 at = Some(i);
+                if max >= limit {
+                    break;
+                }
             }
-            i = (i + stride) % n;
         }
         (max, at)
     }
 }
 
-/// A stride near `0.618 n` that is coprime with `n` (1 for `n ≤ 2`).
-fn scramble_stride(n: usize) -> usize {
-    if n <= 2 {
-        return 1;
-    }
-    let gcd = |mut a: usize, mut b: usize| {
-        while b != 0 {
-            (a, b) = (b, a % b);
-        }
-        a
-    };
-    let mut s = ((n as f64 * 0.618_033_988_749_895) as usize).max(1);
-    while gcd(s, n) != 1 {
-        s += 1;
-    }
-    s
-}
+/// The points [`SegmentTree::farthest_below`] visits first: one in this many.
+const SPREAD: usize = 16;
 
 /// One-sided and symmetric distances between a curve and a reference.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -404,7 +438,8 @@ pub fn polyline_distances(curve: &[Vector2<f64>], reference: &[Vector2<f64>]) ->
 /// # Errors
 /// As [`SegmentTree::new`] for `curve`.
 pub fn distances_to(curve: &[Vector2<f64>], reference: &SegmentTree) -> Result<Distances> {
-    let to_curve = SegmentTree::new(curve)?;
+    // a curve's samples follow it: its tree is split along it
+    let to_curve = SegmentTree::along(curve)?;
     Ok(Distances {
         curve_to_reference: reference.farthest(curve).0,
         reference_to_curve: to_curve.farthest(reference.points()).0,

@@ -580,6 +580,19 @@ fn fewest_outline(n: usize) -> Result<Runner> {
     }))
 }
 
+/// The polygon's exact fewest points ([`crate::interp::choice::search`], linear) on the coast
+/// of Sicily densified to `n` points, within 1 % of its size.
+fn polygon_optimum(n: usize) -> Result<Runner> {
+    use crate::interp::choice::{search, Family, SearchOptions, Target};
+    let coast = densified(&crate::seeds::seed004::coastline(), n);
+    let target = Target::polyline(&coast, true, 1.0)?;
+    let target = target.clone().with_tolerance(0.01 * target.size())?;
+    Ok(Box::new(move || {
+        let found = search(&target, Family::Linear, &SearchOptions::default())?;
+        Ok(black_box(found.choice.measure.counted))
+    }))
+}
+
 /// The twelve formulas of the torus (`X`, `X_s`, `X_t`, `X_st` by coordinate): traced
 /// through `Torus::eval` on hyper-dual numbers of expressions, simplified and printed.
 fn symbolic_torus(_: usize) -> Result<Runner> {
@@ -597,7 +610,7 @@ fn symbolic_torus(_: usize) -> Result<Runner> {
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 22] = [
+pub const WORKLOADS: [Workload; 23] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
@@ -765,6 +778,14 @@ pub const WORKLOADS: [Workload; 22] = [
         size: 10_000,
         sweep: &[],
         setup: fewest_outline,
+    },
+    Workload {
+        id: "polygon-optimum",
+        description: "the polygon's exact fewest points within 1 % on the Sicilian coast densified to n points (default 1e4; one core; points: the count)",
+        unit: "outline points",
+        size: 10_000,
+        sweep: &[1_000, 10_000, 100_000],
+        setup: polygon_optimum,
     },
     Workload {
         id: "symbolic-torus",

@@ -71,6 +71,7 @@ legend!(Start, Self, |s| match s {
     Start::Random => "random",
     Start::Known => "given",
     Start::Fit => "least-squares fit",
+    Start::Exact => "exact optimum",
     Start::Pruned => "pruned",
 });
 

@@ -476,6 +476,59 @@ fn report_cases() -> Vec<Case> {
             }
             Ok(())
         }),
+        case("user::fewest_in_stages_requests", || {
+            use splinelab::input::Contour;
+            use splinelab::interp::choice::Family;
+            use splinelab::report::user::fewest::{
+                default_options, fewest_in_stages, thorough_options, Tolerance,
+            };
+            let line = Contour {
+                points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
+                closed: false,
+            };
+            let fams = [Family::Linear];
+            // no stage; a later stage refused as the first would be
+            ensure!(
+                fewest_in_stages(
+                    std::slice::from_ref(&line),
+                    Tolerance::default(),
+                    &fams,
+                    &[],
+                    &|_| {}
+                )
+                .is_err(),
+                "no stage"
+            );
+            let mut huge = default_options();
+            huge.random_starts = usize::MAX;
+            let stages = [default_options(), huge];
+            ensure!(
+                fewest_in_stages(
+                    std::slice::from_ref(&line),
+                    Tolerance::default(),
+                    &fams,
+                    &stages,
+                    &|_| {}
+                )
+                .is_err(),
+                "a bad second stage"
+            );
+            // a thorough stage after the default one: never more points
+            let stages = [default_options(), thorough_options(&default_options())];
+            let two = ok(fewest_in_stages(
+                &[line],
+                Tolerance::default(),
+                &fams,
+                &stages,
+                &|_| {},
+            ))?;
+            ensure!(
+                two.methods[0].counted() == 3,
+                "{}",
+                two.methods[0].counted()
+            );
+            Ok(())
+        }),
         case("user::surface_requests", || {
             use splinelab::report::user::surface::{
                 BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh,

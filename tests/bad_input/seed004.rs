@@ -59,22 +59,27 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooFewPoints { .. }
             )
         }),
-        case("seed004::cardinal_a_zero", || {
-            expect_err!(
-                CardinalSpline::try_new(four_points(), 0.0),
-                Error::NotPositive { .. }
-            )
+        case("seed004::cardinal_a_zero_is_the_polygon", || {
+            let p = four_points();
+            let c = CardinalSpline::try_new(p.clone(), 0.0).map_err(|e| e.to_string())?;
+            // every point of the curve on the side between the interpolated points
+            for k in 0..=64 {
+                let q = c.point(k as f64 / 64.0);
+                let d = splinelab::metrics::curve::segment_distance(q, p[1], p[2]);
+                ensure!(d <= 1e-15, "{q:?} is {d} off the side");
+            }
+            Ok(())
         }),
         case("seed004::cardinal_a_negative", || {
             expect_err!(
                 CardinalSpline::try_new(four_points(), -0.5),
-                Error::NotPositive { .. }
+                Error::Negative { .. }
             )
         }),
         case("seed004::cardinal_a_nan", || {
             expect_err!(
                 CardinalSpline::try_new(four_points(), f64::NAN),
-                Error::NotPositive { .. }
+                Error::Negative { .. }
             )
         }),
         case("seed004::cardinal_a_huge_overflows_tangent", || {

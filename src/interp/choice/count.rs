@@ -8,11 +8,11 @@ use super::layout::{candidates, Candidate};
 use super::local::{compass, equidistribute, finish, tune_parameter};
 use super::prune::{pruned_starts, Seed};
 use super::{
-    bound, bspline, Attempt, Choice, Family, Minimality, Scratch, Search, SearchOptions, Start,
-    Target, MAX_EVALUATIONS, MAX_RANDOM_STARTS, POLISHED_STARTS,
+    bound, bspline, polygon, Attempt, Choice, Family, Minimality, Scratch, Search, SearchOptions,
+    Start, Target, MAX_EVALUATIONS, MAX_RANDOM_STARTS, POLISHED_STARTS,
 };
 use crate::error::{Error, Result};
-use crate::interp::methods::CubicEnd;
+use crate::interp::methods::{CubicEnd, Method};
 
 /// The fewest points with which `family` draws `target` within its tolerance (module docs):
 /// [`search`]'s choice.
@@ -38,11 +38,76 @@ pub fn fewest_points(target: &Target, family: Family, options: &SearchOptions) -
 /// whose every placement has collinear triples, say); the errors of [`Target::measure`] on
 /// the returned configuration.
 pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Result<Search> {
-    let closed = target.is_closed();
-    check_options(family, closed, options)?;
-    if family == Family::BSpline {
-        return bspline::search(target, options);
+    check_options(family, target.is_closed(), options)?;
+    let search = |options: &SearchOptions| match family {
+        Family::BSpline => bspline::search(target, options),
+        Family::Linear => polygon::search(target, options),
+        _ => placed(target, family, options),
+    };
+    let found = search(options)?;
+    // a family that contains the polygon is never worse than the polygon's optimum: searched
+    // again below it when it is
+    let Some(polygon) = polygon_of(target, family, options)? else {
+        return Ok(found);
+    };
+    let counted = polygon.measure.counted;
+    if found.choice.within_tolerance && found.choice.measure.counted <= counted {
+        return Ok(found);
     }
+    search(&SearchOptions {
+        known: Some(polygon),
+        ..options.clone()
+    })
+}
+
+/// The polygon's exact optimum drawn by `family`, when the family contains the polygon (module
+/// docs, **Polygon**): an order-2 B-spline on its points, a cardinal spline with `a = 0`
+/// through them (open: the chords continued as guides, which zero tangents ignore); `None`
+/// for the other families, or when it counts more than [`SearchOptions::max_points`].
+///
+/// # Errors
+/// The errors of [`Target::measure`].
+fn polygon_of(target: &Target, family: Family, options: &SearchOptions) -> Result<Option<Choice>> {
+    let method = match family {
+        Family::BSpline => Method::BSpline { order: 2 },
+        Family::Cardinal => Method::Cardinal { a: 0.0 },
+        _ => return Ok(None),
+    };
+    let optimum = polygon::fewest_within(target, target.tolerance(), 3)?;
+    if !optimum.choice.within_tolerance {
+        return Ok(None);
+    }
+    let mut points = optimum.choice.points;
+    if family == Family::Cardinal && !target.is_closed() {
+        let n = points.len();
+        let (first, last) = (
+            points[0] * 2.0 - points[1],
+            points[n - 1] * 2.0 - points[n - 2],
+        );
+        points.insert(0, first);
+        points.push(last);
+    }
+    let measure = target.measure(&method, &points)?;
+    let within = measure.distances.hausdorff() <= target.tolerance();
+    Ok(
+        (within && measure.counted <= options.max_points).then_some(Choice {
+            method,
+            points,
+            within_tolerance: true,
+            measure,
+            evaluations: 1,
+            start: Start::Exact,
+        }),
+    )
+}
+
+/// The search of an interpolating family by placed points (module docs, steps 1–3, and
+/// **Count**).
+///
+/// # Errors
+/// As [`search`].
+pub(super) fn placed(target: &Target, family: Family, options: &SearchOptions) -> Result<Search> {
+    let closed = target.is_closed();
     let min = min_distinct(family, closed);
     // the count is capped at a few points per reference segment (points may sit anywhere on
     // a segment: a polygon's sides need them), which bounds the search's cost for any

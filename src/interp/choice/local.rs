@@ -26,7 +26,7 @@ pub(super) fn tune_parameter(
     let own = x[last];
     for a in [own, 0.001, 0.25, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.5] {
         x[last] = a;
-        let e = error_of(target, layout, &x, scratch);
+        let e = error_below(target, layout, &x, scratch, best.0);
         evals += 1;
         if e < best.0 {
             best = (e, a);
@@ -37,8 +37,20 @@ pub(super) fn tune_parameter(
 }
 
 pub(super) fn error_of(target: &Target, layout: &Layout, x: &[f64], scratch: &mut Scratch) -> f64 {
+    error_below(target, layout, x, scratch, f64::INFINITY)
+}
+
+/// [`error_of`] when below `limit`, otherwise a value at least `limit`
+/// ([`Target::search_error_below`]): for the stages that keep only what beats their best.
+fn error_below(
+    target: &Target,
+    layout: &Layout,
+    x: &[f64],
+    scratch: &mut Scratch,
+    limit: f64,
+) -> f64 {
     match layout.points(target, x) {
-        Some(points) => target.search_error(&layout.method(x), &points, scratch),
+        Some(points) => target.search_error_below(&layout.method(x), &points, scratch, limit),
         None => f64::INFINITY,
     }
 }
@@ -128,7 +140,7 @@ pub(super) fn equidistribute(
             break;
         }
         x[..k].copy_from_slice(inner);
-        let e = error_of(target, layout, &x, scratch);
+        let e = error_below(target, layout, &x, scratch, best.1);
         evals += 1;
         if e < best.1 {
             best = (x.clone(), e);
@@ -147,7 +159,7 @@ fn arc_errors(
     scratch: &mut Scratch,
 ) -> Option<Vec<f64>> {
     sample_pieces_into(curve, &curve.breaks(), SEARCH_SAMPLES, &mut scratch.line).ok()?;
-    let tree = SegmentTree::new(&scratch.line).ok()?;
+    let tree = SegmentTree::along(&scratch.line).ok()?;
     let arcs = if target.is_closed() {
         s.len()
     } else {
@@ -206,7 +218,7 @@ pub(super) fn compass(
             for sign in [1.0, -1.0] {
                 let old = x[j];
                 x[j] = old + sign * h[j];
-                let f = error_of(target, layout, &x, scratch);
+                let f = error_below(target, layout, &x, scratch, e);
                 evals += 1;
                 if f < e {
                     e = f;

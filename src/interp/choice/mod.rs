@@ -63,6 +63,18 @@
 //! counts are doubled up to one within the tolerance and bisected below it, the count one
 //! below the answer fitted with every order.
 //!
+//! **Polygon.** The polygon's fewest points are computed exactly ([`polygon`]): the shortest
+//! path over the shortcuts that keep the outline within the tolerance (Imai & Iri 1988, Chan &
+//! Chin 1996), over candidates at the reference's vertices and along its sides; its
+//! minimality is [`Minimality::Optimum`]. Two families contain the polygon, and their search
+//! honours it: an order-2 B-spline on the same points is the polygon (the B-spline count is
+//! never above the polygon's), and a cardinal spline with `a = 0` through them too (zero
+//! tangents; an open curve adds its 2 guides, a closed one repeats 3 points where the polygon
+//! repeats 1: the cardinal count is at most the polygon's + 2). When a family's search ends
+//! above that bound, or finds nothing within the tolerance, it runs again from the polygon's
+//! configuration ([`SearchOptions::known`]). The Angular spline (arcs) and the cubic spline
+//! (C²) do not contain the polygon: no bound follows for them.
+//!
 //! **Dense references** (more than [`COARSE_ABOVE`] vertices, a digitised outline): the search
 //! measures its candidates against a simplification of the reference within
 //! [`COARSE_FRACTION`] of the tolerance ([`simplified`]; the two are that close in Hausdorff
@@ -75,6 +87,7 @@ mod bspline;
 mod count;
 mod layout;
 mod local;
+pub mod polygon;
 mod prune;
 pub mod symmetry;
 mod target;
@@ -163,6 +176,8 @@ pub enum Start {
     Known,
     /// A least-squares fit (B-splines).
     Fit,
+    /// The polygon's exact optimum ([`polygon`]).
+    Exact,
     /// A configuration with more points that meets the tolerance, points taken off
     /// (module docs, step 1).
     Pruned,
@@ -173,7 +188,8 @@ pub enum Start {
 pub enum Family {
     /// The Angular spline.
     Angular,
-    /// The cardinal spline, `a` chosen in `[0.001, 2]` to [`A_STEP`].
+    /// The cardinal spline, `a` chosen in `[0.001, 2]` to [`A_STEP`] (or `a = 0`, the polygon,
+    /// module docs **Polygon**).
     Cardinal,
     /// The cubic spline, the best of the relaxed, cyclic and anticyclic ends.
     Cubic,
@@ -271,6 +287,13 @@ pub enum Minimality {
         /// The lower bound on its error.
         bound: f64,
     },
+    /// The exact optimum (the polygon, [`polygon`]): every polygon with fewer points, placed
+    /// anywhere along the outline in its order, errs by more than `bound` (its sides against
+    /// the stretches of outline they replace).
+    Optimum {
+        /// The error every polygon with fewer points exceeds.
+        bound: f64,
+    },
     /// Every lower count was searched with the full budget and none met the tolerance: the
     /// fewest found, not proven.
     Searched,
@@ -289,6 +312,10 @@ impl Minimality {
                 "proven: one fewer draws {class}, error ≥ {:.2} %",
                 100.0 * bound / size
             ),
+            Minimality::Optimum { bound } => format!(
+                "proven (exact optimum): fewer points err > {:.3} %",
+                100.0 * bound / size
+            ),
             Minimality::Searched => "fewest found (every lower count searched)".into(),
             Minimality::Bisected => "fewest found (lower counts bisected)".into(),
             Minimality::NotMet => "none within the tolerance".into(),
@@ -299,7 +326,7 @@ impl Minimality {
     pub fn proven(&self) -> bool {
         matches!(
             self,
-            Minimality::MethodMinimum | Minimality::LowerBound { .. }
+            Minimality::MethodMinimum | Minimality::LowerBound { .. } | Minimality::Optimum { .. }
         )
     }
 }

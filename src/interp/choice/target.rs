@@ -462,6 +462,19 @@ impl Target {
         points: &[Vector2<f64>],
         buf: &mut Scratch,
     ) -> f64 {
+        self.search_error_below(method, points, buf, f64::INFINITY)
+    }
+
+    /// [`Target::search_error`] when it is below `limit`; otherwise a value at least `limit`
+    /// (the measure stops as soon as it knows: a search that keeps only what beats its best
+    /// so far decides alike).
+    pub(super) fn search_error_below(
+        &self,
+        method: &Method,
+        points: &[Vector2<f64>],
+        buf: &mut Scratch,
+        limit: f64,
+    ) -> f64 {
         let Ok(curve) = method.curve(points, self.closed) else {
             return f64::INFINITY;
         };
@@ -471,9 +484,20 @@ impl Target {
         // the simplification is within COARSE_FRACTION of the tolerance of the reference (in
         // Hausdorff distance: every point of either lies that close to the other), so the
         // error against it is too
-        distances_to(&buf.line, self.coarse.as_ref().unwrap_or(&self.tree))
-            .map(|d| d.hausdorff())
-            .unwrap_or(f64::INFINITY)
+        let reference = self.coarse.as_ref().unwrap_or(&self.tree);
+        if crate::error::finite_points("curve sample", &buf.line).is_err() {
+            return f64::INFINITY;
+        }
+        let (away, _) = reference.farthest_below(&buf.line, limit);
+        if away >= limit {
+            return away;
+        }
+        // the samples follow the curve: a tree split along it needs no sorting
+        let Ok(curve) = SegmentTree::along(&buf.line) else {
+            return f64::INFINITY;
+        };
+        let (missed, _) = curve.farthest_below(reference.points(), limit);
+        away.max(missed)
     }
 }
 

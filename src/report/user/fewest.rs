@@ -174,6 +174,37 @@ pub fn fewest(
     options: &SearchOptions,
     progress: &(dyn Fn(Progress) + Sync),
 ) -> Result<Fewest> {
+    fewest_in_stages(
+        outline,
+        tolerance,
+        families,
+        std::slice::from_ref(options),
+        progress,
+    )
+}
+
+/// As [`fewest`], each contour searched with each of `stages` in turn, every stage starting
+/// from the previous one's answer ([`SearchOptions::known`], its count within the stage's
+/// `max_points`), and the best answer kept: so a later stage is never worse than an earlier
+/// one. `splinelab fewest --thorough` is [`default_options`] then [`thorough_options`].
+///
+/// # Errors
+/// As [`fewest`]; [`crate::Error::TooFewPoints`] for no stage.
+pub fn fewest_in_stages(
+    outline: &[Contour],
+    tolerance: Tolerance,
+    families: &[Family],
+    stages: &[SearchOptions],
+    progress: &(dyn Fn(Progress) + Sync),
+) -> Result<Fewest> {
+    if stages.is_empty() {
+        return Err(crate::Error::TooFewPoints {
+            what: "search stages",
+            needed: 1,
+            got: 0,
+        }
+        .into());
+    }
     if outline.is_empty() || families.is_empty() {
         return Err(crate::Error::TooFewPoints {
             what: if outline.is_empty() {
@@ -198,7 +229,7 @@ pub fn fewest(
         .collect();
     let done = AtomicUsize::new(0);
     let results = crate::parallel::map(&jobs, |&(family, k)| {
-        let found = search(&targets[k], family, options);
+        let found = in_stages(&targets[k], family, stages);
         progress(Progress {
             done: done.fetch_add(1, Ordering::Relaxed) + 1,
             total: jobs.len(),
@@ -226,6 +257,35 @@ pub fn fewest(
         tolerance: distance,
         methods,
     })
+}
+
+/// `target` searched with each of `stages` in turn, each from the previous answer, the best
+/// kept ([`fewest_in_stages`]).
+fn in_stages(target: &Target, family: Family, stages: &[SearchOptions]) -> crate::Result<Search> {
+    let mut best: Option<Search> = None;
+    for stage in stages {
+        let options = match &best {
+            Some(b) if b.choice.within_tolerance => SearchOptions {
+                max_points: stage.max_points.max(b.choice.measure.counted),
+                known: Some(b.choice.clone()),
+                ..stage.clone()
+            },
+            _ => stage.clone(),
+        };
+        let found = search(target, family, &options)?;
+        let rank = |s: &Search| {
+            (
+                !s.choice.within_tolerance,
+                s.choice.measure.counted,
+                s.choice.measure.distances.hausdorff(),
+            )
+        };
+        // a tie goes to the later stage, whose evidence goes further
+        if best.as_ref().is_none_or(|b| rank(&found) <= rank(b)) {
+            best = Some(found);
+        }
+    }
+    Ok(best.expect("at least one stage"))
 }
 
 /// The names [`shape_outline`] takes: the paper's column names (`Ellisse 1`) and our shape
@@ -295,6 +355,16 @@ pub fn table_i_options() -> SearchOptions {
     }
 }
 
+/// The second stage of `splinelab fewest --thorough` ([`fewest_in_stages`], after `first`):
+/// Table I's budget and every count below the answer searched, as many points as `first`
+/// allows (at least Table I's [`MAX_POINTS`]).
+pub fn thorough_options(first: &SearchOptions) -> SearchOptions {
+    SearchOptions {
+        max_points: first.max_points.max(MAX_POINTS),
+        ..SearchOptions::default()
+    }
+}
+
 crate::record! {
     /// A row of the fewest-points table: one method.
     struct FewestRow {
@@ -308,11 +378,47 @@ crate::record! {
     }
 }
 
+crate::record! {
+    /// A point of an outline as the search reads it.
+    struct OutlinePoint {
+        contour: u32 => "contour",
+        closed: bool => "closed",
+        x: f64 => "x",
+        y: f64 => "y",
+    }
+}
+
+/// The outline as the searches read it, one row per point (`contour` from 1, `closed`, `x`,
+/// `y`; a closed contour's last point repeats its first): `splinelab fewest` writes it beside
+/// its table, so that other tools can be run on the same points (`scripts/fewest_peers.py`).
+///
+/// # Errors
+/// [`crate::report::Error::Table`] if the frame cannot be built (an internal error).
+pub fn outline_frame(id: &str, outline: &[Contour]) -> Result<crate::report::table::Frame> {
+    let rows: Vec<OutlinePoint> = outline
+        .iter()
+        .enumerate()
+        .flat_map(|(k, c)| {
+            let mut points = c.points.clone();
+            if c.closed && points.first() != points.last() {
+                points.push(points[0]);
+            }
+            points.into_iter().map(move |p| OutlinePoint {
+                contour: u32::try_from(k + 1).unwrap_or(u32::MAX),
+                closed: c.closed,
+                x: p.x,
+                y: p.y,
+            })
+        })
+        .collect();
+    crate::report::record::frame_of(id, &rows)
+}
+
 /// The least sure of the contours' minimalities, in words.
 fn minimality_of(m: &MethodFewest, size: f64) -> String {
     let rank = |m: &Minimality| match m {
         Minimality::MethodMinimum => 0,
-        Minimality::LowerBound { .. } => 1,
+        Minimality::LowerBound { .. } | Minimality::Optimum { .. } => 1,
         Minimality::Searched => 2,
         Minimality::Bisected => 3,
         Minimality::NotMet => 4,

@@ -158,7 +158,7 @@ pub(super) fn cases() -> Vec<Case> {
             )?;
             expect_err!(
                 t.measure(&Method::Cardinal { a: f64::NAN }, &six_points(0.1)),
-                Error::NotPositive { .. }
+                Error::Negative { .. }
             )
         }),
         case("choice::measure_far_points_finite", || {
@@ -444,7 +444,7 @@ pub(super) fn cases() -> Vec<Case> {
                 };
                 match search(&t, Family::Cardinal, &o) {
                     Ok(s) => check_choice(&t, &s.choice)?,
-                    Err(Error::NotPositive { .. } | Error::NonFinite { .. }) => {}
+                    Err(Error::Negative { .. } | Error::NonFinite { .. }) => {}
                     Err(e) => return Err(format!("a = {a}: unexpected {e}")),
                 }
             }

@@ -58,7 +58,33 @@ pub(super) fn cases() -> Vec<Case> {
             Ok(())
         }),
         case("metrics2::segment_tree_empty", || {
-            expect_err!(SegmentTree::new(&[]), Error::TooFewPoints { got: 0, .. })
+            expect_err!(SegmentTree::new(&[]), Error::TooFewPoints { got: 0, .. })?;
+            expect_err!(SegmentTree::along(&[]), Error::TooFewPoints { got: 0, .. })
+        }),
+        case("metrics2::segment_tree_along_non_finite_and_far", || {
+            sweep(6, |bad, k| {
+                let mut p = vec![v2(0.0, 0.0), v2(1.0, 0.0), v2(1.0, 1.0)];
+                p[k / 2][k % 2] = bad;
+                expect_err!(SegmentTree::along(&p), Error::NonFinite { .. })
+            })?;
+            expect_err!(
+                SegmentTree::along(&[v2(0.0, 0.0), v2(f64::MAX, 1.0)]),
+                Error::CoordinateTooLarge { .. }
+            )
+        }),
+        case("metrics2::farthest_below_limits", || {
+            // any limit, NaN included: the exact distance below it, at least it otherwise
+            let t = ok(SegmentTree::along(&[v2(0.0, 0.0), v2(1.0, 0.0)]))?;
+            let from = [v2(0.5, 3.0), v2(0.5, 1.0), v2(2.0, 0.0)];
+            for limit in [f64::NAN, -1.0, 0.0, 0.5, 2.9, 3.0, 10.0, f64::INFINITY] {
+                let (m, _) = t.farthest_below(&from, limit);
+                if limit > 3.0 {
+                    ensure!(m == 3.0, "limit {limit}: {m}");
+                } else if limit <= 3.0 {
+                    ensure!(m >= limit && m <= 3.0, "limit {limit}: {m}");
+                }
+            }
+            Ok(())
         }),
         case("metrics2::segment_tree_sweep_non_finite", || {
             sweep(6, |bad, k| {

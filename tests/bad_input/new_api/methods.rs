@@ -213,7 +213,7 @@ pub(super) fn cases() -> Vec<Case> {
             || {
                 let m = Method::Cardinal { a: f64::NAN };
                 let set = ok(paper_points(&Shape::Circle, &m, 7))?;
-                expect_err!(m.curve(&set.points, set.closed), Error::NotPositive { .. })
+                expect_err!(m.curve(&set.points, set.closed), Error::Negative { .. })
             },
         ),
         case("seed004api::evenly_spaced_empty_and_zero", || {
@@ -299,21 +299,30 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooFewPoints { .. }
             )
         }),
-        case(
-            "seed004api::method_cardinal_a_non_finite_zero_negative",
-            || {
-                for a in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 0.0, -0.0, -1.0] {
-                    for closed in [false, true] {
-                        expect_err!(
-                            Method::Cardinal { a }.curve(&six_points(1.0), closed),
-                            Error::NotPositive { .. }
-                        )
-                        .map_err(|e| format!("a = {a}: {e}"))?;
-                    }
+        case("seed004api::method_cardinal_a_non_finite_negative", || {
+            for a in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1.0, -5e-324] {
+                for closed in [false, true] {
+                    expect_err!(
+                        Method::Cardinal { a }.curve(&six_points(1.0), closed),
+                        Error::Negative { .. }
+                    )
+                    .map_err(|e| format!("a = {a}: {e}"))?;
                 }
-                Ok(())
-            },
-        ),
+            }
+            Ok(())
+        }),
+        case("seed004api::method_cardinal_a_zero_is_the_polygon", || {
+            // zero tangents: every piece runs along the side between its two points
+            for a in [0.0, -0.0] {
+                for closed in [false, true] {
+                    let m = Method::Cardinal { a };
+                    let p = six_points(1.0);
+                    let c = ok(m.curve(&p, closed))?;
+                    check_curve(&m, &p, closed, &c)?;
+                }
+            }
+            Ok(())
+        }),
         case("seed004api::method_cardinal_a_subnormal", || {
             // a positive a however small: the curve tends to the polygon, still interpolating
             for a in [5e-324, 1e-310, 1e-300] {

@@ -29,7 +29,7 @@ pub(super) fn cases() -> Vec<Case> {
         case("comparison::study_cell_cardinal_nan_a", || {
             let mut cell = TABLE_I[12];
             cell.method = Method::Cardinal { a: f64::NAN };
-            expect_err!(study_cell(&cell, &options(12)), Error::NotPositive { .. })
+            expect_err!(study_cell(&cell, &options(12)), Error::Negative { .. })
         }),
         case("comparison::cross_methods_of_no_cells", || {
             let c = ok(cross_methods(&[]))?;

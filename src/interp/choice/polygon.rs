@@ -1,0 +1,1023 @@
+//! The polygon's fewest points, exactly (module docs of [`super`], **Polygon**): the shortest
+//! path over the graph of shortcuts that stay within the tolerance (Imai & Iri, "Polygonal
+//! approximations of a curve — formulations and algorithms", 1988), every shortcut from one
+//! point tested in one sweep by the cones of Chan & Chin ("On approximation of polygonal
+//! curves with minimum number of line segments or minimum error", 1996).
+//!
+//! **Candidates.** The points may sit at the reference's vertices and at equal steps along
+//! each of its segments, at most `h` apart along the outline, `h` = [`RESOLUTION`] × 2 × the
+//! tolerance (coarser only when the candidates or their shortcuts would exceed
+//! [`MAX_CANDIDATES`] or [`MAX_SHORTCUTS`]; the answer states the `h` it used). An open
+//! outline's polygon starts and ends at the outline's ends, as every placement of the search.
+//!
+//! **Shortcuts.** The side from candidate `a` to candidate `b` is allowed when the outline
+//! between them lies within the tolerance `ε` of the side. The outline runs from one end of
+//! the side to the other, so its projection on the side's line covers the side: every point
+//! of the side is then within `ε` of the outline too — the measure is the symmetric one of
+//! the table, taken side by side (each side against the stretch of outline it replaces; the
+//! table's Hausdorff distance, against the whole outline, can only be smaller). The outline
+//! between is straight between reference vertices and a point's distance to a segment is
+//! convex along a straight line, so the reference vertices between `a` and `b` decide.
+//!
+//! **Cones.** The rays from `a` that pass within `ε` of a point `q` farther than `ε` from `a`
+//! are the directions within `asin(ε / |q − a|)` of `q − a`; sweeping forward from `a`, the
+//! intersection of these arcs over the vertices passed is a cone (an arc narrower than π)
+//! that only narrows, and `b` is reachable forward when `b − a` lies in it; the sweep stops
+//! when it is empty. A backward sweep from `b` does the same for the rays from `b`. A point
+//! within `ε` of both rays — of the ray from `a` towards `b` and of the ray from `b` towards
+//! `a` — is within `ε` of the segment `ab`, so the side is allowed exactly when both sweeps
+//! reach it: `O(n r)` for `n` candidates reaching `r` candidates on.
+//!
+//! **Shortest path.** Open: the fewest sides from the first candidate to the last (one pass in
+//! order). Closed: a polygon has a side covering every candidate `k`, so it has a vertex among
+//! the candidates from which a shortcut passes `k` (or `k` itself); for the `k` with the fewest
+//! such starts, the shortest closed path from every start is computed, all starts in one pass
+//! (a distance per start, the passes over the shortcuts shared), and the least is the answer.
+//!
+//! **Why it is the fewest.** Every polygon with points in order along the outline whose sides
+//! each lie within `ε − h/2` of their stretch can have its points moved to the nearest
+//! candidates, each by at most `h/2` along the outline: each side moves by at most `h/2`, and
+//! the bits of outline that change sides lie within `h/2` of a moved point, so the sides stay
+//! within `ε` (given `h ≤ ε`). So no polygon with fewer points is within `ε − h/2`:
+//! [`Minimality::Optimum`].
+//!
+//! The answer is measured as every configuration is ([`Target::measure`]); a side that the
+//! cones allow by rounding but the measure does not (or, on an exact shape, a point placed on
+//! the curve beside its reference chord) makes the search run again with the tolerance
+//! lowered by the excess.
+
+use super::{Attempt, Choice, Minimality, Search, SearchOptions, Start, Target};
+use crate::error::{Error, Result};
+use crate::interp::methods::Method;
+use nalgebra::Vector2;
+
+/// The candidates' spacing along the outline as a fraction of twice the tolerance: every
+/// point of the outline is within `RESOLUTION × ε` of a candidate, so a polygon with fewer
+/// points errs by more than `(1 − RESOLUTION) ε` (module docs).
+pub const RESOLUTION: f64 = 1.0 / 32.0;
+
+/// The most candidates: beyond, the spacing is doubled until they fit.
+pub const MAX_CANDIDATES: usize = 1 << 20;
+
+/// The most reference vertices that are all candidates (below, the candidates are a superset
+/// of the vertices).
+pub const VERTEX_CANDIDATES: usize = 1 << 14;
+
+/// The most (candidate, point) pairs the forward sweeps visit: beyond, the spacing is doubled until
+/// they fit (the shortcuts' memory is four bytes each).
+pub const MAX_SHORTCUTS: usize = 1 << 25;
+
+/// A distance that no path reaches (paths have fewer than [`MAX_CANDIDATES`] sides).
+const UNREACHED: u32 = u32::MAX / 2;
+
+/// Starts computed together in the closed shortest path (one lane each).
+const LANES: usize = 256;
+
+type V = Vector2<f64>;
+
+/// The fewest points of the polygon on `target` (module docs): the exact optimum over the
+/// candidates, or, when it counts more than [`SearchOptions::max_points`], the polygon of at
+/// most that many points with the least tolerance it meets (bisected), not within the
+/// target's tolerance ([`Minimality::NotMet`]).
+///
+/// # Errors
+/// [`Error::Degenerate`] if no polygon can be measured on the target.
+pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search> {
+    let closed = target.is_closed();
+    let min_distinct = 3;
+    let tolerance = target.tolerance();
+    let found = fewest_within(target, tolerance, min_distinct)?;
+    if found.choice.measure.counted <= options.max_points && found.choice.within_tolerance {
+        let known = super::count::checked_known(target, options)?;
+        if let Some(k) = known.filter(|k| k.measure.counted < found.choice.measure.counted) {
+            // a given polygon the side-by-side measure does not allow, but the table's does
+            return Ok(Search {
+                attempts: vec![attempt_of(&k)],
+                choice: k,
+                minimality: Minimality::Searched,
+            });
+        }
+        let bound = found.bound();
+        return Ok(Search {
+            attempts: vec![attempt_of(&found.choice)],
+            choice: found.choice,
+            minimality: Minimality::Optimum { bound },
+        });
+    }
+    // too many points: the least tolerance met with at most max_points, by bisection between
+    // the tolerance (too many) and the outline's size (a triangle or a segment meets it, or
+    // the size doubled does)
+    let max_distinct = options.max_points.saturating_sub(usize::from(closed));
+    let mut lo = tolerance;
+    let mut hi = 2.0 * target.size().max(tolerance);
+    let mut best = None;
+    for _ in 0..48 {
+        let f = fewest_within(target, hi, min_distinct)?;
+        if f.choice.points.len() <= max_distinct {
+            best = Some(f);
+            break;
+        }
+        lo = hi;
+        hi *= 2.0;
+    }
+    let mut best = best.ok_or(Error::Degenerate {
+        what: "automatic point choice",
+        reason: "no polygon of at most the maximum point count meets any tolerance",
+    })?;
+    for _ in 0..24 {
+        let mid = 0.5 * (lo + hi);
+        let f = fewest_within(target, mid, min_distinct)?;
+        if f.choice.points.len() <= max_distinct {
+            hi = mid;
+            best = f;
+        } else {
+            lo = mid;
+        }
+    }
+    let mut choice = best.choice;
+    choice.within_tolerance = choice.measure.distances.hausdorff() <= tolerance;
+    Ok(Search {
+        attempts: vec![attempt_of(&choice)],
+        choice,
+        minimality: Minimality::NotMet,
+    })
+}
+
+fn attempt_of(c: &Choice) -> Attempt {
+    Attempt {
+        counted: c.measure.counted,
+        best_error: Some(c.measure.distances.hausdorff()),
+        starts: 1,
+        within_tolerance: c.within_tolerance,
+    }
+}
+
+/// The exact optimum within one tolerance, with what its minimality rests on.
+pub(super) struct Optimum {
+    /// The polygon, measured against the target's tolerance.
+    pub choice: Choice,
+    /// The tolerance the cones used (the one asked, or lower after a rounding excess).
+    pub used: f64,
+    /// The largest distance along the outline from a point to the nearest candidate.
+    pub snap: f64,
+}
+
+impl Optimum {
+    /// The error every polygon with fewer points exceeds (module docs); 0 when the candidates
+    /// are too coarse for the argument (`snap` above half the tolerance).
+    fn bound(&self) -> f64 {
+        if 2.0 * self.snap <= self.used {
+            self.used - self.snap
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The exact optimum within `tolerance` (module docs), at least `min_distinct` points, the
+/// configuration measured against the target's own tolerance.
+///
+/// # Errors
+/// [`Error::Degenerate`] if no polygon measures within `tolerance` even after lowering it.
+pub(super) fn fewest_within(
+    target: &Target,
+    tolerance: f64,
+    min_distinct: usize,
+) -> Result<Optimum> {
+    let mut used = tolerance;
+    for _ in 0..8 {
+        let (items, path, snap) = optimum_points(target, used, min_distinct)?;
+        let path = least_tolerance(&items, target.is_closed(), path, used, min_distinct);
+        let candidates: Vec<&Item> = items.iter().filter(|i| i.candidate).collect();
+        let points: Vec<V> = path.iter().map(|&i| candidates[i].p).collect();
+        let method = Method::Linear;
+        let measure = target.measure(&method, &points)?;
+        let error = measure.distances.hausdorff();
+        if error <= tolerance {
+            return Ok(Optimum {
+                choice: Choice {
+                    method,
+                    points,
+                    within_tolerance: error <= target.tolerance(),
+                    measure,
+                    evaluations: 1,
+                    start: Start::Exact,
+                },
+                used,
+                snap,
+            });
+        }
+        // rounding, or a point on an exact curve beside its chord: lower by the excess
+        used -= 2.0 * (error - tolerance) + f64::EPSILON * target.size();
+        if used.is_nan() || used <= 0.0 {
+            break;
+        }
+    }
+    Err(Error::Degenerate {
+        what: "polygon optimum",
+        reason: "its sides stay outside the tolerance after rounding corrections",
+    })
+}
+
+/// Among the polygons of as many points as `path` over the same candidates, one with about
+/// the least tolerance (module docs): a tolerance a billionth of `eps` tried first (a polygon
+/// outline's own corners), then [`REFINEMENTS`] bisections between it and `eps`.
+fn least_tolerance(
+    items: &[Item],
+    closed: bool,
+    path: Vec<usize>,
+    eps: f64,
+    min_distinct: usize,
+) -> Vec<usize> {
+    let count = path.len();
+    let within = |e: f64| {
+        fewest_over(items, e, closed, min_distinct)
+            .flatten()
+            .filter(|p| p.len() <= count)
+    };
+    let (mut lo, mut hi) = (eps * 1e-9, eps);
+    if let Some(p) = within(lo) {
+        return p;
+    }
+    let mut best = path;
+    for _ in 0..REFINEMENTS {
+        let mid = 0.5 * (lo + hi);
+        match within(mid) {
+            Some(p) => {
+                best = p;
+                hi = mid;
+            }
+            None => lo = mid,
+        }
+    }
+    best
+}
+
+/// Bisections of the tolerance among the fewest points (module docs).
+pub const REFINEMENTS: usize = 3;
+
+/// A point of the outline the sweeps pass: a reference vertex, whose distance to a side
+/// counts, or a point along a segment; either may be a candidate.
+#[derive(Debug, Clone, Copy)]
+struct Item {
+    p: V,
+    /// Its arc position.
+    s: f64,
+    vertex: bool,
+    candidate: bool,
+}
+
+/// The points the sweeps pass, the optimum's candidates within `eps` (indices among the
+/// candidates) and the largest distance along the outline to a candidate: every reference vertex a candidate while the outline has at most
+/// [`VERTEX_CANDIDATES`] vertices and the sweeps fit [`MAX_SHORTCUTS`]; otherwise only the
+/// vertices that keep the candidates within the spacing, the spacing doubled until the sweeps
+/// fit.
+///
+/// # Errors
+/// [`Error::Degenerate`] if no polygon follows the outline; [`Error::TooLarge`] if the sweeps
+/// exceed [`MAX_SHORTCUTS`] at every spacing.
+fn optimum_points(
+    target: &Target,
+    eps: f64,
+    min_distinct: usize,
+) -> Result<(Vec<Item>, Vec<usize>, f64)> {
+    let widest = target.length() / 4.0;
+    let mut h = (2.0 * RESOLUTION * eps).min(widest);
+    let mut all = target.reference().len() <= VERTEX_CANDIDATES;
+    loop {
+        if let Some(items) = items(target, h, all)? {
+            if let Some(path) = fewest_over(&items, eps, target.is_closed(), min_distinct) {
+                let path = path.ok_or(Error::Degenerate {
+                    what: "polygon optimum",
+                    reason: "no polygon of at least 3 points follows the outline",
+                })?;
+                let snap = max_gap(&items, target.is_closed(), target.length()) / 2.0;
+                return Ok((items, path, snap));
+            }
+        }
+        if all {
+            all = false;
+        } else if h < widest {
+            h = (2.0 * h).min(widest);
+        } else {
+            return Err(Error::TooLarge {
+                what: "polygon optimum sweeps over the outline's vertices",
+                got: target.reference().len().saturating_mul(4),
+                max: MAX_SHORTCUTS,
+            });
+        }
+    }
+}
+
+/// The fewest of the candidates among `items` (their indices among the candidates, in
+/// order) that draw the items within `eps`, at least `min_distinct`: `None` beyond
+/// [`MAX_SHORTCUTS`], `Some(None)` if no polygon follows them.
+fn fewest_over(
+    items: &[Item],
+    eps: f64,
+    closed: bool,
+    min_distinct: usize,
+) -> Option<Option<Vec<usize>>> {
+    let graph = Shortcuts::new(items, eps, closed)?;
+    Some(if closed {
+        graph.shortest_cycle(min_distinct)
+    } else {
+        graph.shortest_path(min_distinct)
+    })
+}
+
+/// The largest gap between consecutive candidates along the outline (a closed one's last to
+/// its first included).
+fn max_gap(items: &[Item], closed: bool, length: f64) -> f64 {
+    let s: Vec<f64> = items.iter().filter(|i| i.candidate).map(|i| i.s).collect();
+    let inner = s.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+    match (closed, s.first(), s.last()) {
+        (true, Some(first), Some(last)) => inner.max(first + length - last),
+        _ => inner,
+    }
+}
+
+/// How many parts a reference segment of `length` is cut into at spacing `h`.
+fn parts(length: f64, h: f64) -> usize {
+    let k = (length / h).ceil();
+    if k.is_finite() && k >= 1.0 {
+        (k as usize).min(MAX_CANDIDATES)
+    } else {
+        1
+    }
+}
+
+/// The points the sweeps pass at spacing `h` (module docs), in order along the outline (a
+/// closed one without its closing vertex): every reference vertex, a candidate when `all`
+/// or when passing it over would leave more than `h` between candidates (an open outline's
+/// ends always); points at equal steps along the segments longer than `h`, candidates all.
+/// `None` beyond [`MAX_CANDIDATES`] points, or with fewer than 3 candidates.
+fn items(target: &Target, h: f64, all: bool) -> Result<Option<Vec<Item>>> {
+    let points = target.reference();
+    let arcs = target.arcs();
+    let closed = target.is_closed();
+    let mut total = usize::from(!closed);
+    for w in arcs.windows(2) {
+        total = total.saturating_add(parts(w[1] - w[0], h));
+    }
+    if total > MAX_CANDIDATES {
+        return Ok(None);
+    }
+    let mut out: Vec<Item> = Vec::with_capacity(total);
+    // a point where the previous one is adds nothing: it is merged into it (a polygon's
+    // consecutive points differ)
+    let mut push = |item: Item| match out.last_mut() {
+        Some(last) if last.p == item.p => {
+            last.vertex |= item.vertex;
+            last.candidate |= item.candidate;
+        }
+        _ => out.push(item),
+    };
+    let mut last = 0.0;
+    for (k, w) in arcs.windows(2).enumerate() {
+        let candidate = all || k == 0 || w[1] - last > h;
+        if candidate {
+            last = w[0];
+        }
+        push(Item {
+            p: points[k],
+            s: w[0],
+            vertex: true,
+            candidate,
+        });
+        let n = parts(w[1] - w[0], h);
+        for j in 1..n {
+            let s = w[0] + (w[1] - w[0]) * j as f64 / n as f64;
+            let p = target.point(s);
+            crate::error::finite_points("polygon optimum candidate", &[p])?;
+            last = s;
+            push(Item {
+                p,
+                s,
+                vertex: false,
+                candidate: true,
+            });
+        }
+    }
+    if !closed {
+        push(Item {
+            p: points[points.len() - 1],
+            s: target.length(),
+            vertex: true,
+            candidate: true,
+        });
+    } else if out.len() > 1 && out[out.len() - 1].p == out[0].p {
+        let end = out.pop().expect("two items at least");
+        out[0].candidate |= end.candidate;
+    }
+    Ok((out.iter().filter(|i| i.candidate).count() >= 3).then_some(out))
+}
+
+fn cross(a: V, b: V) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The directions from a point whose rays pass within the tolerance of every vertex swept
+/// (module docs, **Cones**): all of them until a vertex lies farther than the tolerance,
+/// then the arc counter-clockwise from `lo` and clockwise from `hi` (narrower than π, unit
+/// vectors), or none.
+#[derive(Debug, Clone, Copy)]
+struct Cone {
+    lo: V,
+    hi: V,
+    full: bool,
+    empty: bool,
+}
+
+/// Whether `d` lies in the arc from `lo` counter-clockwise to `hi` (narrower than π).
+fn in_arc(lo: V, hi: V, d: V) -> bool {
+    cross(lo, d) >= 0.0 && cross(d, hi) >= 0.0
+}
+
+impl Cone {
+    const FULL: Cone = Cone {
+        lo: V::new(1.0, 0.0),
+        hi: V::new(1.0, 0.0),
+        full: true,
+        empty: false,
+    };
+
+    /// One point passed by a sweep, at `d` from the apex: whether the ray towards it is in
+    /// the cone (a side of zero length, `d = 0`, only while the cone is full: an outline
+    /// through the same point twice), the cone then narrowed by it if it is a vertex (to the
+    /// rays within `eps` of it: the directions within `asin(eps/|d|)` of `d`).
+    #[inline(always)]
+    fn pass(&mut self, d: V, vertex: bool, eps: f64) -> bool {
+        if self.full {
+            if vertex {
+                self.narrow(d, eps);
+            }
+            return true;
+        }
+        let (c1, c2) = (cross(self.lo, d), cross(d, self.hi));
+        let inside = c1 >= 0.0 && c2 >= 0.0 && d != V::zeros();
+        // the rays along both edges pass within eps of d: so does every ray between (both
+        // arcs narrower than π), and the cone stays as it is
+        let kept =
+            c1.abs() <= eps && c2.abs() <= eps && self.lo.dot(&d) >= 0.0 && self.hi.dot(&d) >= 0.0;
+        if vertex && !kept {
+            self.narrow(d, eps);
+        }
+        inside
+    }
+
+    /// The cone narrowed to the rays that pass within `eps` of `w` (module docs).
+    fn narrow(&mut self, w: V, eps: f64) {
+        let r = (w.x * w.x + w.y * w.y).sqrt();
+        if r.is_nan() || r <= eps {
+            return;
+        }
+        let u = w / r;
+        let s = eps / r;
+        let c = ((1.0 - s) * (1.0 + s)).sqrt();
+        let lo = V::new(u.x * c + u.y * s, u.y * c - u.x * s);
+        let hi = V::new(u.x * c - u.y * s, u.y * c + u.x * s);
+        if self.full {
+            *self = Cone {
+                lo,
+                hi,
+                full: false,
+                empty: false,
+            };
+            return;
+        }
+        // two arcs narrower than π meet in one arc, which starts at the start of one of them
+        // lying in the other, and ends likewise
+        let (a, b) = (self.lo, self.hi);
+        let start = if in_arc(a, b, lo) {
+            Some(lo)
+        } else {
+            in_arc(lo, hi, a).then_some(a)
+        };
+        let end = if in_arc(a, b, hi) {
+            Some(hi)
+        } else {
+            in_arc(lo, hi, b).then_some(b)
+        };
+        match (start, end) {
+            (Some(lo), Some(hi)) => {
+                self.lo = lo;
+                self.hi = hi;
+            }
+            _ => self.empty = true,
+        }
+    }
+}
+
+/// A count of sides in the closed shortest path's lanes: bytes while paths are short.
+trait Lane: Copy + Ord {
+    /// No path (or one as long).
+    const FAR: Self;
+    const ZERO: Self;
+    /// One side more (saturating at [`Lane::FAR`]).
+    fn next(self) -> Self;
+    fn wide(self) -> u32;
+}
+
+impl Lane for u8 {
+    const FAR: u8 = u8::MAX;
+    const ZERO: u8 = 0;
+    fn next(self) -> u8 {
+        self.saturating_add(1)
+    }
+    fn wide(self) -> u32 {
+        u32::from(self)
+    }
+}
+
+impl Lane for u32 {
+    const FAR: u32 = UNREACHED;
+    const ZERO: u32 = 0;
+    fn next(self) -> u32 {
+        (self + 1).min(UNREACHED)
+    }
+    fn wide(self) -> u32 {
+        self
+    }
+}
+
+/// The allowed shortcuts (module docs): for each candidate, the offsets back to the
+/// candidates with a side to it.
+struct Shortcuts {
+    n: usize,
+    closed: bool,
+    /// `preds[first[v]..first[v + 1]]`: offsets `d` of the sides `(v − d) → v`, increasing.
+    first: Vec<usize>,
+    preds: Vec<u32>,
+    /// The largest forward offset of a side from each candidate.
+    reach: Vec<u32>,
+}
+
+impl Shortcuts {
+    /// The shortcuts among the candidates of `items` within `eps`; `None` if the forward
+    /// sweeps visit more than [`MAX_SHORTCUTS`] points.
+    fn new(items: &[Item], eps: f64, closed: bool) -> Option<Shortcuts> {
+        // in units that bring the coordinates within [−1, 1] (a power of two: exact), so
+        // that no square overflows
+        let largest = items.iter().map(|i| i.p.amax()).fold(0.0, f64::max);
+        let unit = if largest > 0.0 {
+            2f64.powi(-(largest.log2().ceil() as i32).clamp(-1000, 1000))
+        } else {
+            1.0
+        };
+        let eps = eps * unit;
+        let p: Vec<V> = items.iter().map(|i| i.p * unit).collect();
+        let at: Vec<usize> = (0..items.len()).filter(|&k| items[k].candidate).collect();
+        let (n, m) = (at.len(), items.len());
+        let wrap = |k: usize| if k >= m { k - m } else { k };
+        // forward sweeps: bit t − 1 of row i says candidate i + t is reachable forward
+        let mut bits: Vec<u64> = Vec::new();
+        let mut rows: Vec<(usize, usize)> = Vec::with_capacity(n);
+        let mut visited = 0usize;
+        for &a in &at {
+            let start = bits.len();
+            let steps = if closed { m - 1 } else { m - 1 - a };
+            let mut cone = Cone::FULL;
+            let mut t = 0;
+            for step in 1..=steps {
+                let k = wrap(a + step);
+                let item = &items[k];
+                let inside = cone.pass(p[k] - p[a], item.vertex, eps);
+                if item.candidate {
+                    if t % 64 == 0 {
+                        bits.push(0);
+                    }
+                    if inside {
+                        bits[start + t / 64] |= 1 << (t % 64);
+                    }
+                    t += 1;
+                }
+                if cone.empty || step == steps {
+                    visited = visited.saturating_add(step);
+                    break;
+                }
+            }
+            if visited > MAX_SHORTCUTS {
+                return None;
+            }
+            rows.push((start, t));
+        }
+        let forward = |i: usize, t: usize| {
+            let (start, len) = rows[i];
+            t <= len && bits[start + (t - 1) / 64] >> ((t - 1) % 64) & 1 == 1
+        };
+        // backward sweeps, each side kept when both reach it
+        let mut first = Vec::with_capacity(n + 1);
+        let mut preds: Vec<u32> = Vec::new();
+        let mut reach = vec![0u32; n];
+        for (j, &b) in at.iter().enumerate() {
+            first.push(preds.len());
+            let steps = if closed { m - 1 } else { b };
+            let mut cone = Cone::FULL;
+            let mut t = 0;
+            for step in 1..=steps {
+                let k = wrap(b + m - step);
+                let item = &items[k];
+                let inside = cone.pass(p[k] - p[b], item.vertex, eps);
+                if item.candidate {
+                    t += 1;
+                    let i = if j >= t { j - t } else { j + n - t };
+                    if inside && forward(i, t) {
+                        preds.push(t as u32);
+                        reach[i] = reach[i].max(t as u32);
+                    }
+                }
+                if cone.empty {
+                    break;
+                }
+            }
+        }
+        first.push(preds.len());
+        Some(Shortcuts {
+            n,
+            closed,
+            first,
+            preds,
+            reach,
+        })
+    }
+
+    fn preds(&self, v: usize) -> &[u32] {
+        &self.preds[self.first[v]..self.first[v + 1]]
+    }
+
+    /// Open: the candidates of the fewest sides from the first to the last, at least
+    /// `min_points` of them.
+    fn shortest_path(&self, min_points: usize) -> Option<Vec<usize>> {
+        let n = self.n;
+        let mut dist = vec![UNREACHED; n];
+        let mut parent = vec![usize::MAX; n];
+        dist[0] = 0;
+        for v in 1..n {
+            for &d in self.preds(v) {
+                let u = v - d as usize;
+                if dist[u] + 1 < dist[v] {
+                    dist[v] = dist[u] + 1;
+                    parent[v] = u;
+                }
+            }
+        }
+        if dist[n - 1] >= UNREACHED {
+            return None;
+        }
+        if (dist[n - 1] as usize) + 1 < min_points {
+            return self.at_least(0, n - 1, min_points - 1);
+        }
+        let mut path = vec![n - 1];
+        while let Some(&v) = path.last().filter(|&&v| v != 0) {
+            path.push(parent[v]);
+        }
+        path.reverse();
+        Some(path)
+    }
+
+    /// Closed: the candidates of the shortest closed path, at least `min_points` of them
+    /// (module docs).
+    fn shortest_cycle(&self, min_points: usize) -> Option<Vec<usize>> {
+        let n = self.n;
+        // the candidate k passed by the fewest sides: cover[k] counts the starts a with a
+        // side from a beyond k (a difference array over the cyclic positions)
+        let mut diff = vec![0i64; n + 1];
+        for a in 0..n {
+            let r = self.reach[a] as usize;
+            if r >= 2 {
+                // k = a + 1 ..= a + r − 1, wrapped
+                let (s, e) = (a + 1, a + r);
+                if s >= n {
+                    diff[s - n] += 1;
+                    diff[e - n] -= 1;
+                } else if e <= n {
+                    diff[s] += 1;
+                    diff[e] -= 1;
+                } else {
+                    diff[s] += 1;
+                    diff[n] -= 1;
+                    diff[0] += 1;
+                    diff[e - n] -= 1;
+                }
+            }
+        }
+        let mut k = 0;
+        let mut best = i64::MAX;
+        let mut acc = 0;
+        for (i, d) in diff.iter().take(n).enumerate() {
+            acc += d;
+            if acc < best {
+                best = acc;
+                k = i;
+            }
+        }
+        // the starts, as offsets back from k (0: k itself)
+        let mut back: Vec<usize> = (0..n)
+            .filter_map(|a| {
+                let off = (k + n - a) % n;
+                (off == 0 || off < self.reach[a] as usize).then_some(off)
+            })
+            .collect();
+        back.sort_unstable_by(|x, y| y.cmp(x));
+        // bytes first (as many lanes to an instruction as fit), wider if a path is as long
+        let mut answer = self.least_cycle::<u8>(k, &back);
+        if answer.is_none_or(|(l, _)| l >= u8::FAR.wide()) {
+            answer = self.least_cycle::<u32>(k, &back);
+        }
+        let (length, off) = answer?;
+        if (length as usize) < min_points {
+            // fewer sides than a polygon needs (a thin outline): the fewest of at least
+            // `min_points` from every start
+            let mut path = back
+                .iter()
+                .filter_map(|&off| {
+                    let start = (k + n - off) % n;
+                    self.at_least(start, start + n, min_points)
+                })
+                .min_by_key(|p| p.len())?;
+            path.pop();
+            return Some(path);
+        }
+        self.path_from((k + n - off) % n)
+    }
+
+    /// The least of [`Shortcuts::cycles`] over the starts `back` and its start's offset.
+    fn least_cycle<L: Lane>(&self, k: usize, back: &[usize]) -> Option<(u32, usize)> {
+        let mut answer: Option<(u32, usize)> = None;
+        for chunk in back.chunks(LANES) {
+            for (lane, length) in self.cycles::<L>(k, chunk).into_iter().enumerate() {
+                let length = length.wide();
+                if length < UNREACHED && answer.is_none_or(|(l, _)| length < l) {
+                    answer = Some((length, chunk[lane]));
+                }
+            }
+        }
+        answer
+    }
+
+    /// The fewest sides of a closed path from each start (`k` less each offset of `back`,
+    /// decreasing) back to itself, all in one pass over the positions unrolled from the
+    /// first start to the last start plus `n` ([`Lane::FAR`] for none, or as many as that).
+    fn cycles<L: Lane>(&self, k: usize, back: &[usize]) -> Vec<L> {
+        let n = self.n;
+        let lanes = back.len();
+        // rows in a ring of a power of two positions, a distance per lane
+        let window =
+            (self.preds.iter().copied().max().unwrap_or(1) as usize + 1).next_power_of_two();
+        let first = k as i64 - back[0] as i64;
+        let last = k as i64 + n as i64 - *back.last().unwrap_or(&0) as i64;
+        let mut rows = vec![L::FAR; window * lanes];
+        let mut out = vec![L::FAR; lanes];
+        let slot = |p: i64| ((p - first) as usize & (window - 1)) * lanes;
+        let mut row = vec![L::FAR; lanes];
+        for p in first..=last {
+            row.fill(L::FAR);
+            let v = p.rem_euclid(n as i64) as usize;
+            for &d in self.preds(v) {
+                let q = p - d as i64;
+                if q < first {
+                    continue;
+                }
+                let src = &rows[slot(q)..slot(q) + lanes];
+                for (r, &s) in row.iter_mut().zip(src) {
+                    *r = (*r).min(s.next());
+                }
+            }
+            for (lane, &off) in back.iter().enumerate() {
+                let start = k as i64 - off as i64;
+                if p == start {
+                    row[lane] = L::ZERO;
+                } else if p == start + n as i64 {
+                    out[lane] = row[lane];
+                }
+            }
+            let at = slot(p);
+            rows[at..at + lanes].copy_from_slice(&row);
+        }
+        out
+    }
+
+    /// The shortest closed path from `start` (its candidates, `start` once).
+    fn path_from(&self, start: usize) -> Option<Vec<usize>> {
+        let n = self.n;
+        let mut dist = vec![UNREACHED; n + 1];
+        let mut parent = vec![usize::MAX; n + 1];
+        dist[0] = 0;
+        for p in 1..=n {
+            let v = (start + p) % n;
+            for &d in self.preds(v) {
+                let Some(q) = p.checked_sub(d as usize) else {
+                    continue;
+                };
+                if dist[q] + 1 < dist[p] {
+                    dist[p] = dist[q] + 1;
+                    parent[p] = q;
+                }
+            }
+        }
+        if dist[n] >= UNREACHED {
+            return None;
+        }
+        let mut path = Vec::new();
+        let mut p = parent[n];
+        while p != 0 {
+            path.push((start + p) % n);
+            p = parent[p];
+        }
+        path.push(start);
+        path.reverse();
+        Some(path)
+    }
+
+    /// The fewest sides, at least `min_sides`, from unrolled position `from` to `to`
+    /// (breadth-first, layer by layer): the candidates of the path, both ends included.
+    fn at_least(&self, from: usize, to: usize, min_sides: usize) -> Option<Vec<usize>> {
+        let span = to - from;
+        let mut layers: Vec<Vec<u32>> = Vec::new();
+        let mut current = vec![u32::MAX; span + 1];
+        current[0] = 0;
+        for _ in 0..span {
+            let mut next = vec![u32::MAX; span + 1];
+            for (p, parent) in next.iter_mut().enumerate().skip(1) {
+                let v = (from + p) % self.n;
+                let reached = self
+                    .preds(v)
+                    .iter()
+                    .filter_map(|&d| p.checked_sub(d as usize))
+                    .find(|&q| current[q] != u32::MAX);
+                if let Some(q) = reached {
+                    *parent = q as u32;
+                }
+            }
+            layers.push(std::mem::replace(&mut current, next));
+            if current[span] != u32::MAX && layers.len() >= min_sides {
+                let mut path = vec![span];
+                let mut p = span;
+                for layer in (1..=layers.len()).rev() {
+                    let q = if layer == layers.len() {
+                        current[p]
+                    } else {
+                        layers[layer][p]
+                    } as usize;
+                    path.push(q);
+                    p = q;
+                }
+                path.reverse();
+                let wrap = |p: usize| {
+                    if self.closed {
+                        (from + p) % self.n
+                    } else {
+                        from + p
+                    }
+                };
+                return Some(path.into_iter().map(wrap).collect());
+            }
+            if current.iter().all(|&q| q == u32::MAX) {
+                return None;
+            }
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::metrics::curve::segment_distance;
+    use proptest::prelude::*;
+
+    /// Whether the side from `a` forward to `b` keeps every vertex between within `eps`,
+    /// by brute force.
+    fn side_ok(p: &[V], a: usize, b: usize, eps: f64) -> bool {
+        let n = p.len();
+        let mut k = (a + 1) % n;
+        while k != b {
+            if segment_distance(p[k], p[a], p[b]) > eps {
+                return false;
+            }
+            k = (k + 1) % n;
+        }
+        true
+    }
+
+    /// The fewest points by trying every subset of the vertices.
+    fn brute_force(p: &[V], eps: f64, closed: bool) -> usize {
+        let n = p.len();
+        let mut best = usize::MAX;
+        for mask in 0u32..(1 << n) {
+            let set: Vec<usize> = (0..n).filter(|&i| mask >> i & 1 == 1).collect();
+            if set.len() < 3 || set.len() >= best {
+                continue;
+            }
+            if !closed && (set[0] != 0 || *set.last().unwrap() != n - 1) {
+                continue;
+            }
+            let sides = if closed { set.len() } else { set.len() - 1 };
+            if (0..sides).all(|i| side_ok(p, set[i], set[(i + 1) % set.len()], eps)) {
+                best = set.len();
+            }
+        }
+        best
+    }
+
+    fn outline() -> impl Strategy<Value = (Vec<V>, f64, bool)> {
+        (
+            prop::collection::vec((0.0..1.0f64, 0.0..1.0f64), 4..=11),
+            0.01..0.4f64,
+            any::<bool>(),
+        )
+            .prop_map(|(xy, eps, closed)| {
+                (
+                    xy.into_iter().map(|(x, y)| V::new(x, y)).collect(),
+                    eps,
+                    closed,
+                )
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(400))]
+
+        /// The shortest path over the cones' shortcuts is the fewest of every subset, and
+        /// every side it takes passes the brute-force test.
+        #[test]
+        fn optimum_is_every_subsets_fewest((p, eps, closed) in outline()) {
+            let c: Vec<Item> = p
+                .iter()
+                .map(|&p| Item { p, s: 0.0, vertex: true, candidate: true })
+                .collect();
+            let path = fewest_over(&c, eps, closed, 3).unwrap().unwrap();
+            prop_assert_eq!(path.len(), brute_force(&p, eps, closed));
+            let sides = if closed { path.len() } else { path.len() - 1 };
+            for i in 0..sides {
+                let (a, b) = (path[i], path[(i + 1) % path.len()]);
+                prop_assert!(side_ok(&p, a, b, eps), "side {} → {}", a, b);
+            }
+            if !closed {
+                prop_assert_eq!(path[0], 0);
+                prop_assert_eq!(path[path.len() - 1], p.len() - 1);
+            }
+        }
+
+        /// Points along the sides can only lower the count, and the answer meets the
+        /// tolerance by the table's measure.
+        #[test]
+        fn candidates_along_the_sides_never_cost((p, eps, closed) in outline()) {
+            let size = 1.0;
+            let Ok(target) = Target::polyline(&p, closed, eps * size) else {
+                return Ok(());
+            };
+            let found = fewest_within(&target, target.tolerance(), 3).unwrap();
+            prop_assert!(found.choice.within_tolerance);
+            let vertices = brute_force(&p, eps, closed);
+            prop_assert!(found.choice.points.len() <= vertices);
+        }
+    }
+
+    /// The exact optimum is never above the multistart search of the placed points.
+    #[test]
+    fn never_above_the_placed_search() {
+        let mut rng = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            (rng >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let options = SearchOptions {
+            max_points: 24,
+            budget_per_coordinate: 10,
+            every_count_below: false,
+            ..SearchOptions::default()
+        };
+        for case in 0..24 {
+            let closed = case % 2 == 0;
+            // a wobbly ring or arc of 40 vertices
+            let p: Vec<V> = (0..40)
+                .map(|k| {
+                    let t = k as f64 / 40.0 * if closed { std::f64::consts::TAU } else { 3.0 };
+                    let r = 1.0 + 0.3 * next();
+                    V::new(r * t.cos(), r * t.sin())
+                })
+                .collect();
+            let target = Target::polyline(&p, closed, 0.05).unwrap();
+            let exact = search(&target, &options).unwrap();
+            let placed =
+                super::super::count::placed(&target, super::super::Family::Linear, &options)
+                    .unwrap();
+            assert!(
+                exact.choice.within_tolerance || !placed.choice.within_tolerance,
+                "case {case}"
+            );
+            if placed.choice.within_tolerance {
+                assert!(
+                    exact.choice.measure.counted <= placed.choice.measure.counted,
+                    "case {case}: {} against {}",
+                    exact.choice.measure.counted,
+                    placed.choice.measure.counted
+                );
+            }
+        }
+    }
+}
