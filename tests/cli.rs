@@ -479,7 +479,8 @@ fn fewest_on_a_paper_shape_prints_table_i_counts_and_writes_a_table_and_figures(
             "parabola-1-cubic.png",
             "parabola-1-cubic.svg",
             "parabola-1-fewest.csv",
-            "parabola-1-fewest.md"
+            "parabola-1-fewest.md",
+            "parabola-1-outline.csv"
         ]
     );
 }

@@ -1937,7 +1937,7 @@ proptest! {
         guard(|| {
             let r = if closed { CardinalSpline::closed(&pts, a) } else { CardinalSpline::try_new(pts.clone(), a) };
             if let Ok(c) = r {
-                prop_assert!(a.is_finite() && a > 0.0);
+                prop_assert!(a.is_finite() && a >= 0.0);
                 let p = c.points().to_vec();
                 let inner = &p[1..p.len() - 1];
                 check_interp("CardinalSpline", inner, |i| c.point(i as f64))?;

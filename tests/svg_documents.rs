@@ -559,3 +559,28 @@ mod random_documents {
         }
     }
 }
+
+/// A fill with no inside (a `<line>`, a path along one line) draws only its stroke: the
+/// outline is the stroke's centre line, open, and nothing when there is no stroke.
+#[test]
+fn a_fill_along_one_line_is_its_stroke_or_nothing() {
+    let doc = |body: &str| {
+        format!(r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">{body}</svg>"#)
+    };
+    let square = r#"<rect x="10" y="10" width="20" height="20"/>"#;
+    let line = r#"<line x1="0" y1="50" x2="100" y2="50" stroke="red"/>"#;
+    let outline = read_svg_document(&doc(&format!("{square}{line}")), 1e-3).unwrap();
+    let contours = outline.into_contours();
+    assert_eq!(contours.len(), 2);
+    assert!(contours[0].closed);
+    assert!(!contours[1].closed, "the line is its stroke's centre line");
+    assert_eq!(contours[1].points.len(), 2);
+    // filled, not stroked, along one line (three collinear points): nothing is drawn
+    let flat = r#"<path d="M 0 0 L 50 50 L 100 100 Z" fill="black"/>"#;
+    let outline = read_svg_document(&doc(&format!("{square}{flat}")), 1e-3).unwrap();
+    assert_eq!(outline.into_contours().len(), 1);
+    assert!(
+        read_svg_document(&doc(flat), 1e-3).is_err(),
+        "a document that draws nothing"
+    );
+}

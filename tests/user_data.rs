@@ -370,7 +370,7 @@ fn the_simplification_stays_within_its_distance() {
 
 #[test]
 fn a_dense_outline_is_searched_coarsely_and_measured_exactly() {
-    let dense = square(2000);
+    let dense = square(3000);
     assert!(dense.len() > splinelab::interp::choice::COARSE_ABOVE);
     let target = Target::polyline(&dense, true, 0.01).unwrap();
     let found = fewest(

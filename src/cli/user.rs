@@ -350,6 +350,14 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
         }
         (None, None) => anyhow::bail!("give an OUTLINE file or --shape"),
     };
+    // the outline as read, first: it is there to look at whatever the search says
+    let points = args.out.join(format!("{name}-outline.csv"));
+    std::fs::create_dir_all(&args.out)?;
+    splinelab::report::table::write_csv(
+        &fewest::outline_frame(&format!("{name}-outline"), &outline)?,
+        &points,
+    )?;
+    crate::say(format_args!("wrote {}", points.display()))?;
     let families: Vec<Family> = args.method.iter().map(|m| m.family()).collect();
     let first = SearchOptions {
         max_points: args.max_points,
@@ -392,13 +400,6 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
     }
     let found = found?;
     let table = fewest::table(&format!("{name}-fewest"), &found)?;
-    let points = args.out.join(format!("{name}-outline.csv"));
-    std::fs::create_dir_all(&args.out)?;
-    splinelab::report::table::write_csv(
-        &fewest::outline_frame(&format!("{name}-outline"), &outline)?,
-        &points,
-    )?;
-    crate::say(format_args!("wrote {}", points.display()))?;
     let figures = fewest::figures(&found)?;
     for path in table.write(&args.out)? {
         crate::say(format_args!("wrote {}", path.display()))?;

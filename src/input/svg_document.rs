@@ -8,7 +8,8 @@
 //! - **The outline** is the geometry of every path a viewer fills or strokes: a filled path's
 //!   contours are the boundary of its fill (an open subpath of a filled path is closed, as the
 //!   fill closes it); a path only stroked gives its **centre line** (the stroke's width is not
-//!   an outline). Paths with neither fill nor stroke, hidden ones (`visibility`, `display`),
+//!   an outline), and so does a filled subpath along one line, which has no inside (a `<line>`:
+//!   its stroke's centre line if it is stroked, nothing otherwise). Paths with neither fill nor stroke, hidden ones (`visibility`, `display`),
 //!   those under a group of opacity 0 and whatever is not drawn where it stands (`<defs>`,
 //!   `<symbol>` until used, `<clipPath>`, `<mask>`, `<marker>` until placed, `<pattern>`
 //!   contents) are not outline.
@@ -403,9 +404,37 @@ impl Reader<'_, '_> {
         if !path.is_visible() || (fill.is_none() && stroke.is_none()) {
             return Ok(());
         }
-        let contours = self
+        let mut contours = self
             .flatten(path.data(), ts, fill.is_some())
             .map_err(|e| self.place_id(path.id(), e))?;
+        if fill.is_some() && contours.iter().any(|c| encloses_nothing(&c.points)) {
+            // a subpath on one line has no inside to fill (an SVG <line> is filled so): a
+            // viewer draws only its stroke, whose outline is its centre line, or nothing
+            let lines = match stroke {
+                Some(_) => self
+                    .flatten(path.data(), ts, false)
+                    .map_err(|e| self.place_id(path.id(), e))?,
+                None => Vec::new(),
+            };
+            contours = if lines.len() == contours.len() {
+                contours
+                    .into_iter()
+                    .zip(lines)
+                    .filter_map(|(c, l)| match encloses_nothing(&c.points) {
+                        false => Some(c),
+                        true => stroke.is_some().then_some(l),
+                    })
+                    .collect()
+            } else {
+                contours
+                    .into_iter()
+                    .filter(|c| !encloses_nothing(&c.points))
+                    .collect()
+            };
+            if contours.is_empty() {
+                return Ok(());
+            }
+        }
         if self.has_arcs {
             self.arc_bound = self.arc_bound.max(arcs_bound(path.data(), ts));
         }
@@ -418,7 +447,7 @@ impl Reader<'_, '_> {
         Ok(())
     }
 
-    /// The contours of `data` mapped by `ts`, flattened within the tolerance; each subpath
+    /// The contours of `data` mapped by `ts`, flattened within the tolerance, one a subpath; each subpath
     /// closed if `close_all` (a fill closes it).
     fn flatten(
         &self,
@@ -752,4 +781,28 @@ fn byte_at(text: &str, line: usize, column: usize) -> usize {
         offset += l.len();
     }
     text.len()
+}
+
+/// Whether the points of a filled subpath all lie on one line (to a few units of rounding of
+/// their extent), so that its fill covers nothing.
+fn encloses_nothing(points: &[Vector2<f64>]) -> bool {
+    let Some(&a) = points.first() else {
+        return true;
+    };
+    // the point farthest from the first, and every point's distance off the line through both
+    let Some(&b) = points
+        .iter()
+        .max_by(|p, q| (*p - a).norm().total_cmp(&(*q - a).norm()))
+    else {
+        return true;
+    };
+    let d = b - a;
+    let length = d.norm();
+    if length.is_nan() || length <= 0.0 {
+        return true;
+    }
+    let slack = 64.0 * f64::EPSILON * points.iter().map(|p| p.amax()).fold(0.0, f64::max);
+    points
+        .iter()
+        .all(|p| ((p - a).x * d.y - (p - a).y * d.x).abs() / length <= slack)
 }

@@ -523,7 +523,7 @@ fn report_cases() -> Vec<Case> {
                 &|_| {},
             ))?;
             ensure!(
-                two.methods[0].counted() == 3,
+                two.methods[0].counted() == 2,
                 "{}",
                 two.methods[0].counted()
             );

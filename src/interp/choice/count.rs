@@ -44,20 +44,30 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
         Family::Linear => polygon::search(target, options),
         _ => placed(target, family, options),
     };
-    let found = search(options)?;
-    // a family that contains the polygon is never worse than the polygon's optimum: searched
-    // again below it when it is
+    // a family that contains the polygon is never worse than the polygon's optimum
     let Some(polygon) = polygon_of(target, family, options)? else {
-        return Ok(found);
+        return search(options);
     };
     let counted = polygon.measure.counted;
+    let given = checked_known(target, options)?;
+    if given.as_ref().is_some_and(|k| k.measure.counted <= counted) {
+        return search(options);
+    }
+    let from_polygon = SearchOptions {
+        known: Some(polygon),
+        ..options.clone()
+    };
+    if !options.every_count_below {
+        // counts bisected: from the polygon's count down
+        return search(&from_polygon);
+    }
+    // every count searched: on its own first, again below the polygon's count if it ends
+    // above it (or finds nothing within the tolerance)
+    let found = search(options)?;
     if found.choice.within_tolerance && found.choice.measure.counted <= counted {
         return Ok(found);
     }
-    search(&SearchOptions {
-        known: Some(polygon),
-        ..options.clone()
-    })
+    search(&from_polygon)
 }
 
 /// The polygon's exact optimum drawn by `family`, when the family contains the polygon (module
@@ -73,7 +83,11 @@ fn polygon_of(target: &Target, family: Family, options: &SearchOptions) -> Resul
         Family::Cardinal => Method::Cardinal { a: 0.0 },
         _ => return Ok(None),
     };
-    let optimum = polygon::fewest_within(target, target.tolerance(), 3)?;
+    let optimum = polygon::fewest_within(
+        target,
+        target.tolerance(),
+        min_distinct(Family::Linear, target.is_closed()),
+    )?;
     if !optimum.choice.within_tolerance {
         return Ok(None);
     }
@@ -131,7 +145,9 @@ pub(super) fn placed(target: &Target, family: Family, options: &SearchOptions) -
     // nothing valid anywhere: the count whose best start came nearest, in full
     if counts.found.is_none() && counts.tried.iter().all(|a| a.2.is_none()) {
         if let Some((_, n)) = nearest.filter(|&(_, n)| counts.tried.iter().all(|a| a.0 != n)) {
-            counts.full(n)?;
+            if let Some(c) = counts.full(n)? {
+                counts.found = Some((n, c));
+            }
         }
     }
     counts.answer(min)
@@ -501,11 +517,12 @@ pub fn max_distinct_for(target: &Target) -> usize {
 }
 
 /// The fewest distinct points of a family: 3 closed (Angular and cardinal: 3 + 3 repeats),
-/// 2 + 2 guides open for the guided families, 3 for the cubic.
-fn min_distinct(family: Family, closed: bool) -> usize {
+/// 2 + 2 guides open for the guided families, 3 for the cubic, 2 for the polygon (a segment).
+pub(super) fn min_distinct(family: Family, closed: bool) -> usize {
     match (family, closed) {
         (_, true) => 3,
         (Family::Angular | Family::Cardinal, false) => 4,
+        (Family::Linear, false) => 2,
         _ => 3,
     }
 }

@@ -84,7 +84,7 @@ type V = Vector2<f64>;
 /// [`Error::Degenerate`] if no polygon can be measured on the target.
 pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search> {
     let closed = target.is_closed();
-    let min_distinct = 3;
+    let min_distinct = super::count::min_distinct(super::Family::Linear, closed);
     let tolerance = target.tolerance();
     let found = fewest_within(target, tolerance, min_distinct)?;
     if found.choice.measure.counted <= options.max_points && found.choice.within_tolerance {
@@ -289,7 +289,7 @@ fn optimum_points(
             if let Some(path) = fewest_over(&items, eps, target.is_closed(), min_distinct) {
                 let path = path.ok_or(Error::Degenerate {
                     what: "polygon optimum",
-                    reason: "no polygon of at least 3 points follows the outline",
+                    reason: "no polygon of the fewest points a polygon needs follows the outline",
                 })?;
                 let snap = max_gap(&items, target.is_closed(), target.length()) / 2.0;
                 return Ok((items, path, snap));

@@ -36,15 +36,15 @@ pub struct Target {
     /// For a reference of more than [`COARSE_ABOVE`] vertices: its simplification within
     /// [`COARSE_FRACTION`] of the tolerance ([`simplified`]), against which the search's error
     /// is measured ([`Target::measure`] always uses the whole reference).
-    coarse: Option<SegmentTree>,
+    coarse: Option<(SegmentTree, Vec<f64>)>,
 }
 
 /// References with more vertices than this are searched against a simplification
 /// ([`Target::measure`] stays exact): a digitised outline of 10⁴ points costs the search its
 /// distance from every vertex to every curve tried, a simplification within a sixty-fourth of
-/// the tolerance a few hundred. The paper's shapes (2 049 vertices), letters and coast are
-/// below it.
-pub const COARSE_ABOVE: usize = 4096;
+/// the tolerance a few hundred. The paper's shapes (2 049 vertices: exactly this), letters
+/// and coast are not above it.
+pub const COARSE_ABOVE: usize = 2049;
 
 /// The simplification's distance from the reference, as a fraction of the tolerance.
 pub const COARSE_FRACTION: f64 = 1.0 / 64.0;
@@ -172,7 +172,12 @@ impl Target {
     fn with_coarse(mut self) -> Self {
         let points = self.tree.points();
         self.coarse = (points.len() > COARSE_ABOVE)
-            .then(|| SegmentTree::new(&simplified(points, COARSE_FRACTION * self.tolerance)).ok())
+            .then(|| {
+                let kept = simplified_indices(points, COARSE_FRACTION * self.tolerance);
+                let coarse: Vec<Vector2<f64>> = kept.iter().map(|&i| points[i]).collect();
+                let arcs = kept.iter().map(|&i| self.arc[i]).collect();
+                SegmentTree::new(&coarse).ok().map(|t| (t, arcs))
+            })
             .flatten();
         self
     }
@@ -181,6 +186,16 @@ impl Target {
     /// its candidates against a simplification ([`simplified`]) and only its answers exactly.
     pub fn is_dense(&self) -> bool {
         self.coarse.is_some()
+    }
+
+    /// The polyline the search measures against, with the arc position of each vertex: the
+    /// reference's simplification on a dense target ([`Target::is_dense`]), else the
+    /// reference.
+    pub(super) fn search_reference(&self) -> (&[Vector2<f64>], &[f64]) {
+        match &self.coarse {
+            Some((tree, arcs)) => (tree.points(), arcs),
+            None => (self.tree.points(), &self.arc),
+        }
     }
 
     /// The reference polyline.
@@ -484,7 +499,7 @@ impl Target {
         // the simplification is within COARSE_FRACTION of the tolerance of the reference (in
         // Hausdorff distance: every point of either lies that close to the other), so the
         // error against it is too
-        let reference = self.coarse.as_ref().unwrap_or(&self.tree);
+        let reference = self.coarse.as_ref().map_or(&self.tree, |c| &c.0);
         if crate::error::finite_points("curve sample", &buf.line).is_err() {
             return f64::INFINITY;
         }
@@ -514,11 +529,19 @@ pub const MAX_RUN: usize = 64;
 /// of the segment at that distance). The ends are the polyline's; the work is linear in the
 /// vertices (at most [`MAX_RUN`]² distance evaluations per kept vertex).
 pub fn simplified(points: &[Vector2<f64>], epsilon: f64) -> Vec<Vector2<f64>> {
+    simplified_indices(points, epsilon)
+        .into_iter()
+        .map(|i| points[i])
+        .collect()
+}
+
+/// The indices of [`simplified`]'s vertices in `points`.
+fn simplified_indices(points: &[Vector2<f64>], epsilon: f64) -> Vec<usize> {
     let n = points.len();
     if n < 3 {
-        return points.to_vec();
+        return (0..n).collect();
     }
-    let mut out = vec![points[0]];
+    let mut out = vec![0];
     let mut a = 0;
     let mut b = 1;
     while b < n - 1 {
@@ -530,12 +553,12 @@ pub fn simplified(points: &[Vector2<f64>], epsilon: f64) -> Vec<Vector2<f64>> {
         if fits {
             b = c;
         } else {
-            out.push(points[b]);
+            out.push(b);
             a = b;
             b = a + 1;
         }
     }
-    out.push(points[n - 1]);
+    out.push(n - 1);
     out
 }
 
