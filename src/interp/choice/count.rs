@@ -73,7 +73,8 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
 /// The polygon's exact optimum drawn by `family`, when the family contains the polygon (module
 /// docs, **Polygon**): an order-2 B-spline on its points, a cardinal spline with `a = 0`
 /// through them (open: the chords continued as guides, which zero tangents ignore); `None`
-/// for the other families, or when it counts more than [`SearchOptions::max_points`].
+/// for the other families, when it counts more than [`SearchOptions::max_points`], or when the
+/// polygon's optimum cannot be computed (an outline beyond its limits, [`polygon`]).
 ///
 /// # Errors
 /// The errors of [`Target::measure`].
@@ -83,11 +84,15 @@ fn polygon_of(target: &Target, family: Family, options: &SearchOptions) -> Resul
         Family::Cardinal => Method::Cardinal { a: 0.0 },
         _ => return Ok(None),
     };
-    let optimum = polygon::fewest_within(
+    // an outline too large for the polygon's sweeps has no bound (the family's own search
+    // still runs)
+    let Ok(optimum) = polygon::fewest_within(
         target,
         target.tolerance(),
         min_distinct(Family::Linear, target.is_closed()),
-    )?;
+    ) else {
+        return Ok(None);
+    };
     if !optimum.choice.within_tolerance {
         return Ok(None);
     }

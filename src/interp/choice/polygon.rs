@@ -301,9 +301,9 @@ fn optimum_points(
             h = (2.0 * h).min(widest);
         } else {
             return Err(Error::TooLarge {
-                what: "polygon optimum sweeps over the outline's vertices",
-                got: target.reference().len().saturating_mul(4),
-                max: MAX_SHORTCUTS,
+                what: "outline vertices for the polygon's optimum (its sweeps pass their limit)",
+                got: target.reference().len(),
+                max: MAX_CANDIDATES,
             });
         }
     }

@@ -229,6 +229,25 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+        risky("choice::polygon_beyond_its_candidates", || {
+            // more vertices than the polygon's optimum takes: a typed refusal for the polygon,
+            // and the families it bounds still answer (without the bound)
+            let n = (1 << 20) + 100;
+            let ring: Vec<Vector2<f64>> = (0..n)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / n as f64;
+                    Vector2::new(t.cos(), t.sin())
+                })
+                .collect();
+            let t = ok(Target::polyline(&ring, true, 0.02))?;
+            expect_err!(
+                fewest_points(&t, Family::Linear, &SearchOptions::default()),
+                Error::TooLarge { .. }
+            )?;
+            let c = ok(fewest_points(&t, Family::BSpline, &options(12)))?;
+            ensure!(c.within_tolerance, "{:?}", c.measure);
+            Ok(())
+        }),
         case("choice::fewest_points_budget_zero", || {
             let t = ok(rectangle_target(40))?;
             let c = ok(fewest_points(
