@@ -90,6 +90,7 @@ fn polygon_of(target: &Target, family: Family, options: &SearchOptions) -> Resul
         target,
         target.tolerance(),
         min_distinct(Family::Linear, target.is_closed()),
+        true,
     ) else {
         return Ok(None);
     };

@@ -59,6 +59,14 @@ pub const RESOLUTION: f64 = 1.0 / 32.0;
 /// The most candidates: beyond, the spacing is doubled until they fit.
 pub const MAX_CANDIDATES: usize = 1 << 20;
 
+/// The most candidates along the sides per reference segment, on average (at least
+/// [`MIN_ALONG`] in all): beyond, the spacing is doubled (a tolerance far below the outline's
+/// size would otherwise put millions of candidates on a few long sides).
+pub const ALONG_PER_SEGMENT: usize = 8;
+
+/// The candidates along the sides always allowed, whatever the segments.
+pub const MIN_ALONG: usize = 256;
+
 /// The most reference vertices that are all candidates (below, the candidates are a superset
 /// of the vertices).
 pub const VERTEX_CANDIDATES: usize = 1 << 14;
@@ -86,7 +94,7 @@ pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search>
     let closed = target.is_closed();
     let min_distinct = super::count::min_distinct(super::Family::Linear, closed);
     let tolerance = target.tolerance();
-    let found = fewest_within(target, tolerance, min_distinct)?;
+    let found = fewest_within(target, tolerance, min_distinct, true)?;
     if found.choice.measure.counted <= options.max_points && found.choice.within_tolerance {
         let known = super::count::checked_known(target, options)?;
         if let Some(k) = known.filter(|k| k.measure.counted < found.choice.measure.counted) {
@@ -112,7 +120,7 @@ pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search>
     let mut hi = 2.0 * target.size().max(tolerance);
     let mut best = None;
     for _ in 0..48 {
-        let f = fewest_within(target, hi, min_distinct)?;
+        let f = fewest_within(target, hi, min_distinct, false)?;
         if f.choice.points.len() <= max_distinct {
             best = Some(f);
             break;
@@ -124,9 +132,9 @@ pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search>
         what: "automatic point choice",
         reason: "no polygon of at most the maximum point count meets any tolerance",
     })?;
-    for _ in 0..24 {
+    for _ in 0..16 {
         let mid = 0.5 * (lo + hi);
-        let f = fewest_within(target, mid, min_distinct)?;
+        let f = fewest_within(target, mid, min_distinct, false)?;
         if f.choice.points.len() <= max_distinct {
             hi = mid;
             best = f;
@@ -175,7 +183,8 @@ impl Optimum {
 }
 
 /// The exact optimum within `tolerance` (module docs), at least `min_distinct` points, the
-/// configuration measured against the target's own tolerance.
+/// configuration measured against the target's own tolerance; with `refine`, the one of about
+/// the least error among the fewest ([`REFINEMENTS`]).
 ///
 /// # Errors
 /// [`Error::Degenerate`] if no polygon measures within `tolerance` even after lowering it.
@@ -183,11 +192,16 @@ pub(super) fn fewest_within(
     target: &Target,
     tolerance: f64,
     min_distinct: usize,
+    refine: bool,
 ) -> Result<Optimum> {
     let mut used = tolerance;
     for _ in 0..8 {
         let (items, path, snap) = optimum_points(target, used, min_distinct)?;
-        let path = least_tolerance(&items, target.is_closed(), path, used, min_distinct);
+        let path = if refine {
+            least_tolerance(&items, target.is_closed(), path, used, min_distinct)
+        } else {
+            path
+        };
         let candidates: Vec<&Item> = items.iter().filter(|i| i.candidate).collect();
         let points: Vec<V> = path.iter().map(|&i| candidates[i].p).collect();
         let method = Method::Linear;
@@ -360,7 +374,9 @@ fn items(target: &Target, h: f64, all: bool) -> Result<Option<Vec<Item>>> {
     for w in arcs.windows(2) {
         total = total.saturating_add(parts(w[1] - w[0], h));
     }
-    if total > MAX_CANDIDATES {
+    let segments = arcs.len() - 1;
+    let along = total - segments - usize::from(!closed);
+    if total > MAX_CANDIDATES || along > segments.saturating_mul(ALONG_PER_SEGMENT).max(MIN_ALONG) {
         return Ok(None);
     }
     let mut out: Vec<Item> = Vec::with_capacity(total);
@@ -968,7 +984,7 @@ mod tests {
             let Ok(target) = Target::polyline(&p, closed, eps * size) else {
                 return Ok(());
             };
-            let found = fewest_within(&target, target.tolerance(), 3).unwrap();
+            let found = fewest_within(&target, target.tolerance(), 3, true).unwrap();
             prop_assert!(found.choice.within_tolerance);
             let vertices = brute_force(&p, eps, closed);
             prop_assert!(found.choice.points.len() <= vertices);
