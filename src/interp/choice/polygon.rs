@@ -6,9 +6,11 @@
 //!
 //! **Candidates.** The points may sit at the reference's vertices and at equal steps along
 //! each of its segments, at most `h` apart along the outline, `h` = [`RESOLUTION`] × 2 × the
-//! tolerance (coarser only when the candidates or their shortcuts would exceed
-//! [`MAX_CANDIDATES`] or [`MAX_SHORTCUTS`]; the answer states the `h` it used). An open
-//! outline's polygon starts and ends at the outline's ends, as every placement of the search.
+//! tolerance. It is coarser only when the points along the segments would exceed
+//! [`ALONG_PER_SEGMENT`] per segment and [`MIN_ALONG`] in all (a tolerance far below the
+//! outline's size), or the work its limits ([`MAX_CANDIDATES`], [`MAX_SHORTCUTS`],
+//! [`MAX_CYCLE_WORK`]); the answer's bound states the `h` it used. An open outline's polygon
+//! starts and ends at the outline's ends, as every placement of the search.
 //!
 //! **Shortcuts.** The side from candidate `a` to candidate `b` is allowed when the outline
 //! between them lies within the tolerance `ε` of the side. The outline runs from one end of
@@ -26,7 +28,11 @@
 //! when it is empty. A backward sweep from `b` does the same for the rays from `b`. A point
 //! within `ε` of both rays — of the ray from `a` towards `b` and of the ray from `b` towards
 //! `a` — is within `ε` of the segment `ab`, so the side is allowed exactly when both sweeps
-//! reach it: `O(n r)` for `n` candidates reaching `r` candidates on.
+//! reach it: `O(n r)` for `n` candidates reaching `r` candidates on. The sides between two
+//! candidates of one reference segment are all allowed and are not listed (the path scans
+//! carry the least distance along the segment), and the points along a segment that a cone
+//! holds are one interval of them, found by bisection: long straight sides cost no more
+//! than their vertices.
 //!
 //! **Shortest path.** Open: the fewest sides from the first candidate to the last (one pass in
 //! order). Closed: a polygon has a side covering every candidate `k`, so it has a vertex among
@@ -60,12 +66,18 @@ pub const RESOLUTION: f64 = 1.0 / 32.0;
 pub const MAX_CANDIDATES: usize = 1 << 20;
 
 /// The most candidates along the sides per reference segment, on average (at least
-/// [`MIN_ALONG`] in all): beyond, the spacing is doubled (a tolerance far below the outline's
-/// size would otherwise put millions of candidates on a few long sides).
-pub const ALONG_PER_SEGMENT: usize = 8;
+/// [`MIN_ALONG`] in all): beyond, the spacing is the finest that keeps them within (a
+/// tolerance far below the outline's size would otherwise put millions of candidates on a
+/// few long sides).
+pub const ALONG_PER_SEGMENT: usize = 32;
+
+/// The most candidates along the sides of `segments` reference segments.
+fn along_cap(segments: usize) -> usize {
+    segments.saturating_mul(ALONG_PER_SEGMENT).max(MIN_ALONG)
+}
 
 /// The candidates along the sides always allowed, whatever the segments.
-pub const MIN_ALONG: usize = 256;
+pub const MIN_ALONG: usize = 8192;
 
 /// The most reference vertices that are all candidates (below, the candidates are a superset
 /// of the vertices).
@@ -74,6 +86,10 @@ pub const VERTEX_CANDIDATES: usize = 1 << 14;
 /// The most (candidate, point) pairs the forward sweeps visit: beyond, the spacing is doubled until
 /// they fit (the shortcuts' memory is four bytes each).
 pub const MAX_SHORTCUTS: usize = 1 << 25;
+
+/// The most work of the closed shortest path: passes of 256 starts times the sides and
+/// candidates each pass visits (beyond, the spacing is doubled).
+pub const MAX_CYCLE_WORK: usize = 1 << 26;
 
 /// A distance that no path reaches (paths have fewer than [`MAX_CANDIDATES`] sides).
 const UNREACHED: u32 = u32::MAX / 2;
@@ -84,9 +100,9 @@ const LANES: usize = 256;
 type V = Vector2<f64>;
 
 /// The fewest points of the polygon on `target` (module docs): the exact optimum over the
-/// candidates, or, when it counts more than [`SearchOptions::max_points`], the polygon of at
-/// most that many points with the least tolerance it meets (bisected), not within the
-/// target's tolerance ([`Minimality::NotMet`]).
+/// candidates, or, when it counts more than [`SearchOptions::max_points`], the polygon over
+/// the reference's vertices of at most that many points with the least tolerance it meets
+/// (bisected), not within the target's tolerance ([`Minimality::NotMet`]).
 ///
 /// # Errors
 /// [`Error::Degenerate`] if no polygon can be measured on the target.
@@ -183,8 +199,10 @@ impl Optimum {
 }
 
 /// The exact optimum within `tolerance` (module docs), at least `min_distinct` points, the
-/// configuration measured against the target's own tolerance; with `refine`, the one of about
-/// the least error among the fewest ([`REFINEMENTS`]).
+/// configuration measured against the target's own tolerance; with `exact`, over the
+/// candidates along the sides too and the one of about the least error among the fewest
+/// ([`REFINEMENTS`]), otherwise over the reference's vertices alone (a segment longer than a
+/// quarter of the outline cut once or more), a bound of 0.
 ///
 /// # Errors
 /// [`Error::Degenerate`] if no polygon measures within `tolerance` even after lowering it.
@@ -192,12 +210,12 @@ pub(super) fn fewest_within(
     target: &Target,
     tolerance: f64,
     min_distinct: usize,
-    refine: bool,
+    exact: bool,
 ) -> Result<Optimum> {
     let mut used = tolerance;
     for _ in 0..8 {
-        let (items, path, snap) = optimum_points(target, used, min_distinct)?;
-        let path = if refine {
+        let (items, path, snap) = optimum_points(target, used, min_distinct, exact)?;
+        let path = if exact {
             least_tolerance(&items, target.is_closed(), path, used, min_distinct)
         } else {
             path
@@ -282,22 +300,35 @@ struct Item {
 }
 
 /// The points the sweeps pass, the optimum's candidates within `eps` (indices among the
-/// candidates) and the largest distance along the outline to a candidate: every reference vertex a candidate while the outline has at most
-/// [`VERTEX_CANDIDATES`] vertices and the sweeps fit [`MAX_SHORTCUTS`]; otherwise only the
-/// vertices that keep the candidates within the spacing, the spacing doubled until the sweeps
-/// fit.
+/// candidates) and the largest distance along the outline to a candidate. The spacing along
+/// the sides is `2 RESOLUTION eps` with `along` (no finer than the caps
+/// [`ALONG_PER_SEGMENT`] and [`MIN_ALONG`] allow), else a quarter of the outline; every
+/// reference vertex is a candidate while the outline has at most [`VERTEX_CANDIDATES`]
+/// vertices. Beyond [`MAX_SHORTCUTS`] or [`MAX_CYCLE_WORK`], the spacing is doubled up to a
+/// quarter of the outline, then only the vertices that keep the candidates within the spacing
+/// are candidates, the spacing again from the start and doubled until the work fits.
 ///
 /// # Errors
-/// [`Error::Degenerate`] if no polygon follows the outline; [`Error::TooLarge`] if the sweeps
-/// exceed [`MAX_SHORTCUTS`] at every spacing.
+/// [`Error::Degenerate`] if no polygon follows the outline; [`Error::TooLarge`] if the work
+/// exceeds its limits at every spacing.
 fn optimum_points(
     target: &Target,
     eps: f64,
     min_distinct: usize,
+    along: bool,
 ) -> Result<(Vec<Item>, Vec<usize>, f64)> {
     let widest = target.length() / 4.0;
-    let mut h = (2.0 * RESOLUTION * eps).min(widest);
+    // the finest spacing the caps on the candidates along the sides allow: the pieces beyond
+    // the segments' own number are at most length / h
+    let segments = target.arcs().len() - 1;
+    let finest = (target.length() / along_cap(segments) as f64).max(f64::MIN_POSITIVE);
     let mut all = target.reference().len() <= VERTEX_CANDIDATES;
+    let start = if along || !all {
+        (2.0 * RESOLUTION * eps).max(finest).min(widest)
+    } else {
+        widest
+    };
+    let mut h = start;
     loop {
         if let Some(items) = items(target, h, all)? {
             if let Some(path) = fewest_over(&items, eps, target.is_closed(), min_distinct) {
@@ -309,10 +340,12 @@ fn optimum_points(
                 return Ok((items, path, snap));
             }
         }
-        if all {
-            all = false;
-        } else if h < widest {
+        // coarser along the sides first, then the vertices thinned, from the start again
+        if h < widest {
             h = (2.0 * h).min(widest);
+        } else if all {
+            all = false;
+            h = start;
         } else {
             return Err(Error::TooLarge {
                 what: "outline vertices for the polygon's optimum (its sweeps pass their limit)",
@@ -325,7 +358,7 @@ fn optimum_points(
 
 /// The fewest of the candidates among `items` (their indices among the candidates, in
 /// order) that draw the items within `eps`, at least `min_distinct`: `None` beyond
-/// [`MAX_SHORTCUTS`], `Some(None)` if no polygon follows them.
+/// [`MAX_SHORTCUTS`] or [`MAX_CYCLE_WORK`], `Some(None)` if no polygon follows them.
 fn fewest_over(
     items: &[Item],
     eps: f64,
@@ -333,11 +366,11 @@ fn fewest_over(
     min_distinct: usize,
 ) -> Option<Option<Vec<usize>>> {
     let graph = Shortcuts::new(items, eps, closed)?;
-    Some(if closed {
+    if closed {
         graph.shortest_cycle(min_distinct)
     } else {
-        graph.shortest_path(min_distinct)
-    })
+        Some(graph.shortest_path(min_distinct))
+    }
 }
 
 /// The largest gap between consecutive candidates along the outline (a closed one's last to
@@ -376,7 +409,7 @@ fn items(target: &Target, h: f64, all: bool) -> Result<Option<Vec<Item>>> {
     }
     let segments = arcs.len() - 1;
     let along = total - segments - usize::from(!closed);
-    if total > MAX_CANDIDATES || along > segments.saturating_mul(ALONG_PER_SEGMENT).max(MIN_ALONG) {
+    if total > MAX_CANDIDATES || along > along_cap(segments) {
         return Ok(None);
     }
     let mut out: Vec<Item> = Vec::with_capacity(total);
@@ -482,6 +515,34 @@ impl Cone {
         inside
     }
 
+    /// The points `d(0), …, d(run − 1)` (from the apex, in order along a straight line) that
+    /// lie in the cone, as an interval of their indices: the cone is the intersection of two
+    /// half-planes through the apex, and each holds a prefix or a suffix of points along a
+    /// line, found by bisection (a point at the apex is not in a narrowed cone).
+    fn interval(&self, run: usize, d: impl Fn(usize) -> V) -> (usize, usize) {
+        if self.full {
+            return (0, run);
+        }
+        if self.empty || run == 0 {
+            return (0, 0);
+        }
+        let inside = |x: usize| {
+            let v = d(x);
+            v != V::zeros() && cross(self.lo, v) >= 0.0 && cross(v, self.hi) >= 0.0
+        };
+        let (lo1, hi1) = half_interval(run, |x| cross(self.lo, d(x)) >= 0.0);
+        let (lo2, hi2) = half_interval(run, |x| cross(d(x), self.hi) >= 0.0);
+        let (mut lo, mut hi) = (lo1.max(lo2), hi1.min(hi2).max(lo1.max(lo2)));
+        // the apex itself (an outline through the same point twice) at either end
+        if lo < hi && !inside(lo) {
+            lo += 1;
+        }
+        if lo < hi && !inside(hi - 1) {
+            hi -= 1;
+        }
+        (lo, hi)
+    }
+
     /// The cone narrowed to the rays that pass within `eps` of `w` (module docs).
     fn narrow(&mut self, w: V, eps: f64) {
         let r = (w.x * w.x + w.y * w.y).sqrt();
@@ -525,6 +586,32 @@ impl Cone {
     }
 }
 
+/// The indices `0..run` where `f` holds, given that it holds on a prefix or a suffix (a
+/// half-plane along a line): its ends, then a bisection for the change.
+fn half_interval(run: usize, f: impl Fn(usize) -> bool) -> (usize, usize) {
+    match (f(0), f(run - 1)) {
+        (true, true) => (0, run),
+        (false, false) => (0, 0),
+        (head, _) => {
+            // f(lo) == head != f(hi)
+            let (mut lo, mut hi) = (0, run - 1);
+            while hi - lo > 1 {
+                let mid = lo + (hi - lo) / 2;
+                if f(mid) == head {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            if head {
+                (0, hi)
+            } else {
+                (hi, run)
+            }
+        }
+    }
+}
+
 /// A count of sides in the closed shortest path's lanes: bytes while paths are short.
 trait Lane: Copy + Ord {
     /// No path (or one as long).
@@ -562,11 +649,49 @@ impl Lane for u32 {
 struct Shortcuts {
     n: usize,
     closed: bool,
-    /// `preds[first[v]..first[v + 1]]`: offsets `d` of the sides `(v − d) → v`, increasing.
+    /// `preds[first[v]..first[v + 1]]`: offsets `d` of the sides `(v − d) → v`, increasing,
+    /// except the sides along one reference segment ([`Along`]).
     first: Vec<usize>,
     preds: Vec<u32>,
+    /// How each candidate joins the candidates before it on its reference segment.
+    along: Vec<Along>,
     /// The largest forward offset of a side from each candidate.
     reach: Vec<u32>,
+}
+
+/// The sides between two candidates of one reference segment (its end vertices included)
+/// are all allowed — the outline between them is that straight stretch — and are not
+/// listed: each path scan carries the least distance over the segment so far (quadratic
+/// lists on long straight sides otherwise).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Along {
+    /// No candidate before it on its segment: no side along one.
+    None,
+    /// Sides from every candidate since the segment's first (a run that goes on).
+    Run,
+    /// Sides from every candidate since the segment's first, which it ends: a reference
+    /// vertex, where the next run starts.
+    End,
+}
+
+impl Along {
+    /// The least over the run after this candidate: the run goes on, or starts here.
+    #[inline(always)]
+    fn carry<L: Lane>(self, run: L, here: L) -> L {
+        match self {
+            Along::Run => run.min(here),
+            Along::None | Along::End => here,
+        }
+    }
+
+    /// The distance the run gives this candidate (one side more than the run's least).
+    #[inline(always)]
+    fn reached<L: Lane>(self, run: L) -> L {
+        match self {
+            Along::None => L::FAR,
+            Along::Run | Along::End => run.next(),
+        }
+    }
 }
 
 impl Shortcuts {
@@ -586,66 +711,129 @@ impl Shortcuts {
         let at: Vec<usize> = (0..items.len()).filter(|&k| items[k].candidate).collect();
         let (n, m) = (at.len(), items.len());
         let wrap = |k: usize| if k >= m { k - m } else { k };
-        // forward sweeps: bit t − 1 of row i says candidate i + t is reachable forward
+        // candidates among the items before each position, unrolled once for closed outlines
+        let mut cum = vec![0usize; 2 * m + 1];
+        for x in 0..2 * m {
+            cum[x + 1] = cum[x] + usize::from(items[wrap(x)].candidate);
+        }
+        // steps from each item to the next reference vertex after it and back to the one
+        // before it (`usize::MAX`: none; an open outline's ends)
+        let mut next = vec![usize::MAX; m];
+        let mut prev = vec![usize::MAX; m];
+        let mut seen = None;
+        for x in (0..if closed { 2 * m } else { m }).rev() {
+            if x < m {
+                next[x] = seen.map_or(usize::MAX, |y: usize| y - x);
+            }
+            if items[wrap(x)].vertex {
+                seen = Some(x);
+            }
+        }
+        seen = None;
+        for x in 0..if closed { 2 * m } else { m } {
+            if x >= m || !closed {
+                let k = wrap(x);
+                prev[k] = seen.map_or(usize::MAX, |y: usize| x - y);
+            }
+            if items[wrap(x)].vertex {
+                seen = Some(x);
+            }
+        }
+        // forward sweeps: the sides along the first segment implied (an offset `t0`), then
+        // bit t − t0 − 1 of row i says candidate i + t is reachable forward
         let mut bits: Vec<u64> = Vec::new();
-        let mut rows: Vec<(usize, usize)> = Vec::with_capacity(n);
+        let mut rows: Vec<(usize, usize, usize)> = Vec::with_capacity(n);
+        let mut reach = vec![0u32; n];
         let mut visited = 0usize;
-        for &a in &at {
+        for (i, &a) in at.iter().enumerate() {
             let start = bits.len();
             let steps = if closed { m - 1 } else { m - 1 - a };
             let mut cone = Cone::FULL;
-            let mut t = 0;
-            for step in 1..=steps {
+            // along the segment to its end vertex: no vertex between, every side allowed
+            let jump = next[a].min(steps);
+            let t0 = cum[a + jump + 1] - cum[a + 1];
+            reach[i] = t0 as u32;
+            if jump >= 1 {
+                let e = wrap(a + jump);
+                cone.pass(p[e] - p[a], items[e].vertex, eps);
+            }
+            let mut t = t0;
+            let mut step = jump + 1;
+            while step <= steps && !cone.empty {
                 let k = wrap(a + step);
-                let item = &items[k];
-                let inside = cone.pass(p[k] - p[a], item.vertex, eps);
-                if item.candidate {
-                    if t % 64 == 0 {
-                        bits.push(0);
-                    }
-                    if inside {
-                        bits[start + t / 64] |= 1 << (t % 64);
-                    }
-                    t += 1;
+                // a vertex narrows the cone; the points along the segment after it do not,
+                // and those in the cone are one interval of them
+                let (run, (lo, hi)) = if items[k].vertex {
+                    let inside = cone.pass(p[k] - p[a], true, eps);
+                    (1, (0, usize::from(inside)))
+                } else {
+                    let run = next[k].min(steps + 1 - step);
+                    (run, cone.interval(run, |x| p[wrap(a + step + x)] - p[a]))
+                };
+                let (first, last) = (t - t0, t - t0 + usize::from(items[k].candidate) * run);
+                bits.resize(start + last.div_ceil(64), 0);
+                for bit in first + lo..(first + hi).min(last) {
+                    bits[start + bit / 64] |= 1 << (bit % 64);
                 }
-                if cone.empty || step == steps {
-                    visited = visited.saturating_add(step);
-                    break;
-                }
+                t += last - first;
+                step += run;
+                visited = visited.saturating_add(1 + hi - lo);
             }
             if visited > MAX_SHORTCUTS {
                 return None;
             }
-            rows.push((start, t));
+            rows.push((start, t0, t));
         }
         let forward = |i: usize, t: usize| {
-            let (start, len) = rows[i];
-            t <= len && bits[start + (t - 1) / 64] >> ((t - 1) % 64) & 1 == 1
+            let (start, t0, len) = rows[i];
+            t > t0 && t <= len && bits[start + (t - t0 - 1) / 64] >> ((t - t0 - 1) % 64) & 1 == 1
         };
-        // backward sweeps, each side kept when both reach it
+        // backward sweeps, each side kept when both reach it (past the segment's sides)
         let mut first = Vec::with_capacity(n + 1);
         let mut preds: Vec<u32> = Vec::new();
-        let mut reach = vec![0u32; n];
+        let mut along = Vec::with_capacity(n);
         for (j, &b) in at.iter().enumerate() {
             first.push(preds.len());
             let steps = if closed { m - 1 } else { b };
+            let jump = prev[b].min(steps);
+            let unrolled = b + m;
+            let t0 = cum[unrolled] - cum[unrolled - jump];
+            along.push(match (t0, items[b].vertex) {
+                (0, _) => Along::None,
+                (_, true) => Along::End,
+                (_, false) => Along::Run,
+            });
             let mut cone = Cone::FULL;
-            let mut t = 0;
-            for step in 1..=steps {
-                let k = wrap(b + m - step);
-                let item = &items[k];
-                let inside = cone.pass(p[k] - p[b], item.vertex, eps);
-                if item.candidate {
-                    t += 1;
-                    let i = if j >= t { j - t } else { j + n - t };
-                    if inside && forward(i, t) {
-                        preds.push(t as u32);
-                        reach[i] = reach[i].max(t as u32);
+            if jump >= 1 {
+                let e = wrap(unrolled - jump);
+                cone.pass(p[e] - p[b], items[e].vertex, eps);
+            }
+            let mut t = t0;
+            let mut step = jump + 1;
+            while step <= steps && !cone.empty {
+                let k = wrap(unrolled - step);
+                let (run, (lo, hi)) = if items[k].vertex {
+                    let inside = cone.pass(p[k] - p[b], true, eps);
+                    (1, (0, usize::from(inside)))
+                } else {
+                    let run = prev[k].min(steps + 1 - step);
+                    (
+                        run,
+                        cone.interval(run, |x| p[wrap(unrolled - step - x)] - p[b]),
+                    )
+                };
+                if items[k].candidate {
+                    for x in lo..hi {
+                        let t = t + x + 1;
+                        let i = if j >= t { j - t } else { j + n - t };
+                        if forward(i, t) {
+                            preds.push(t as u32);
+                            reach[i] = reach[i].max(t as u32);
+                        }
                     }
+                    t += run;
                 }
-                if cone.empty {
-                    break;
-                }
+                step += run;
             }
         }
         first.push(preds.len());
@@ -654,6 +842,7 @@ impl Shortcuts {
             closed,
             first,
             preds,
+            along,
             reach,
         })
     }
@@ -669,13 +858,22 @@ impl Shortcuts {
         let mut dist = vec![UNREACHED; n];
         let mut parent = vec![usize::MAX; n];
         dist[0] = 0;
+        // the least distance along the current segment and where
+        let mut run = (0, 0);
         for v in 1..n {
+            if self.along[v] != Along::None && run.0 + 1 < dist[v] {
+                dist[v] = run.0 + 1;
+                parent[v] = run.1;
+            }
             for &d in self.preds(v) {
                 let u = v - d as usize;
                 if dist[u] + 1 < dist[v] {
                     dist[v] = dist[u] + 1;
                     parent[v] = u;
                 }
+            }
+            if self.along[v] != Along::Run || dist[v] < run.0 {
+                run = (dist[v], v);
             }
         }
         if dist[n - 1] >= UNREACHED {
@@ -693,8 +891,8 @@ impl Shortcuts {
     }
 
     /// Closed: the candidates of the shortest closed path, at least `min_points` of them
-    /// (module docs).
-    fn shortest_cycle(&self, min_points: usize) -> Option<Vec<usize>> {
+    /// (module docs); `None` beyond [`MAX_CYCLE_WORK`], `Some(None)` if there is none.
+    fn shortest_cycle(&self, min_points: usize) -> Option<Option<Vec<usize>>> {
         let n = self.n;
         // the candidate k passed by the fewest sides: cover[k] counts the starts a with a
         // side from a beyond k (a difference array over the cyclic positions)
@@ -736,10 +934,20 @@ impl Shortcuts {
             })
             .collect();
         back.sort_unstable_by(|x, y| y.cmp(x));
+        let passes = back.len().div_ceil(LANES);
+        if passes.saturating_mul(self.preds.len() + self.n) > MAX_CYCLE_WORK {
+            return None;
+        }
+        Some(self.cycle_from_starts(k, &back, min_points))
+    }
+
+    /// The shortest closed path over the starts `back` (offsets back from `k`, decreasing).
+    fn cycle_from_starts(&self, k: usize, back: &[usize], min_points: usize) -> Option<Vec<usize>> {
+        let n = self.n;
         // bytes first (as many lanes to an instruction as fit), wider if a path is as long
-        let mut answer = self.least_cycle::<u8>(k, &back);
+        let mut answer = self.least_cycle::<u8>(k, back);
         if answer.is_none_or(|(l, _)| l >= u8::FAR.wide()) {
-            answer = self.least_cycle::<u32>(k, &back);
+            answer = self.least_cycle::<u32>(k, back);
         }
         let (length, off) = answer?;
         if (length as usize) < min_points {
@@ -787,9 +995,14 @@ impl Shortcuts {
         let mut out = vec![L::FAR; lanes];
         let slot = |p: i64| ((p - first) as usize & (window - 1)) * lanes;
         let mut row = vec![L::FAR; lanes];
+        // the least distance along the current segment, per lane
+        let mut run = vec![L::FAR; lanes];
         for p in first..=last {
-            row.fill(L::FAR);
             let v = p.rem_euclid(n as i64) as usize;
+            let along = self.along[v];
+            for (r, &s) in row.iter_mut().zip(&run) {
+                *r = along.reached(s);
+            }
             for &d in self.preds(v) {
                 let q = p - d as i64;
                 if q < first {
@@ -808,6 +1021,9 @@ impl Shortcuts {
                     out[lane] = row[lane];
                 }
             }
+            for (r, &h) in run.iter_mut().zip(&row) {
+                *r = along.carry(*r, h);
+            }
             let at = slot(p);
             rows[at..at + lanes].copy_from_slice(&row);
         }
@@ -820,8 +1036,14 @@ impl Shortcuts {
         let mut dist = vec![UNREACHED; n + 1];
         let mut parent = vec![usize::MAX; n + 1];
         dist[0] = 0;
+        let mut run = (0, 0);
         for p in 1..=n {
             let v = (start + p) % n;
+            let along = self.along[v];
+            if along != Along::None && run.0 + 1 < dist[p] {
+                dist[p] = run.0 + 1;
+                parent[p] = run.1;
+            }
             for &d in self.preds(v) {
                 let Some(q) = p.checked_sub(d as usize) else {
                     continue;
@@ -830,6 +1052,9 @@ impl Shortcuts {
                     dist[p] = dist[q] + 1;
                     parent[p] = q;
                 }
+            }
+            if along != Along::Run || dist[p] < run.0 {
+                run = (dist[p], p);
             }
         }
         if dist[n] >= UNREACHED {
@@ -855,16 +1080,25 @@ impl Shortcuts {
         current[0] = 0;
         for _ in 0..span {
             let mut next = vec![u32::MAX; span + 1];
+            // a position of the current segment in the current layer
+            let mut run = (current[0] != u32::MAX).then_some(0);
             for (p, parent) in next.iter_mut().enumerate().skip(1) {
                 let v = (from + p) % self.n;
+                let along = self.along[v];
                 let reached = self
                     .preds(v)
                     .iter()
                     .filter_map(|&d| p.checked_sub(d as usize))
-                    .find(|&q| current[q] != u32::MAX);
+                    .find(|&q| current[q] != u32::MAX)
+                    .or(run.filter(|_| along != Along::None));
                 if let Some(q) = reached {
                     *parent = q as u32;
                 }
+                let here = (current[p] != u32::MAX).then_some(p);
+                run = match along {
+                    Along::Run => run.or(here),
+                    Along::None | Along::End => here,
+                };
             }
             layers.push(std::mem::replace(&mut current, next));
             if current[span] != u32::MAX && layers.len() >= min_sides {
@@ -952,8 +1186,130 @@ mod tests {
             })
     }
 
+    /// Whether every reference vertex among `items` strictly between candidates `a` and `b`
+    /// (forward) lies within `eps` of the side, by brute force.
+    fn items_side_ok(items: &[Item], a: usize, b: usize, eps: f64) -> bool {
+        let m = items.len();
+        let mut k = (a + 1) % m;
+        while k != b {
+            if items[k].vertex && segment_distance(items[k].p, items[a].p, items[b].p) > eps {
+                return false;
+            }
+            k = (k + 1) % m;
+        }
+        true
+    }
+
+    /// The fewest points over the candidates of `items`, at least `min_points`, by
+    /// breadth-first search over every pair of candidates tested by brute force.
+    fn items_brute_force(
+        items: &[Item],
+        eps: f64,
+        closed: bool,
+        min_points: usize,
+    ) -> Option<usize> {
+        let at: Vec<usize> = (0..items.len()).filter(|&k| items[k].candidate).collect();
+        let n = at.len();
+        let (starts, min_sides) = if closed {
+            ((0..n).collect::<Vec<_>>(), min_points)
+        } else {
+            (vec![0], min_points - 1)
+        };
+        let span = if closed { n } else { n - 1 };
+        let mut best: Option<usize> = None;
+        for s in starts {
+            // positions unrolled from s: reached with exactly `sides` sides
+            let mut layer = vec![false; span + 1];
+            layer[0] = true;
+            for sides in 1..=span {
+                let mut next = vec![false; span + 1];
+                for q in 0..span {
+                    if !layer[q] {
+                        continue;
+                    }
+                    for (r, slot) in next.iter_mut().enumerate().skip(q + 1) {
+                        let (a, b) = (at[(s + q) % n], at[(s + r) % n]);
+                        if items_side_ok(items, a, b, eps) {
+                            *slot = true;
+                        }
+                    }
+                }
+                layer = next;
+                if layer[span] && sides >= min_sides {
+                    let points = if closed { sides } else { sides + 1 };
+                    best = Some(best.map_or(points, |b| b.min(points)));
+                    break;
+                }
+            }
+        }
+        best
+    }
+
+    /// Outlines of a few vertices with points along their sides, some vertices not
+    /// candidates (an open outline's ends always are).
+    fn outline_with_points_along() -> impl Strategy<Value = (Vec<Item>, f64, bool)> {
+        (
+            prop::collection::vec(
+                ((0.0..1.0f64, 0.0..1.0f64), any::<bool>(), 0usize..12),
+                3..=7,
+            ),
+            0.01..0.3f64,
+            any::<bool>(),
+        )
+            .prop_map(|(vertices, eps, closed)| {
+                let last = vertices.len() - 1;
+                let mut items = Vec::new();
+                for (k, &((x, y), candidate, along)) in vertices.iter().enumerate() {
+                    let p = V::new(x, y);
+                    let end = !closed && (k == 0 || k == last);
+                    items.push(Item {
+                        p,
+                        s: 0.0,
+                        vertex: true,
+                        candidate: candidate || end,
+                    });
+                    if k == last && !closed {
+                        break;
+                    }
+                    let ((nx, ny), _, _) = vertices[(k + 1) % vertices.len()];
+                    let q = V::new(nx, ny);
+                    for j in 1..=along {
+                        let f = j as f64 / (along + 1) as f64;
+                        items.push(Item {
+                            p: p + (q - p) * f,
+                            s: 0.0,
+                            vertex: false,
+                            candidate: true,
+                        });
+                    }
+                }
+                (items, eps, closed)
+            })
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(400))]
+
+        /// With points along the sides (the sides along one segment implied, not listed),
+        /// the shortest path is the fewest by brute force over every pair of candidates,
+        /// and each of its sides passes the brute-force test.
+        #[test]
+        fn sides_along_the_segments_match_every_pair((items, eps, closed) in outline_with_points_along()) {
+            let n = items.iter().filter(|i| i.candidate).count();
+            prop_assume!(n >= 3);
+            let min_points = if closed { 3 } else { 2 };
+            let found = fewest_over(&items, eps, closed, min_points).unwrap();
+            let brute = items_brute_force(&items, eps, closed, min_points);
+            prop_assert_eq!(found.as_ref().map(Vec::len), brute);
+            if let Some(path) = found {
+                let at: Vec<usize> = (0..items.len()).filter(|&k| items[k].candidate).collect();
+                let sides = if closed { path.len() } else { path.len() - 1 };
+                for i in 0..sides {
+                    let (a, b) = (at[path[i]], at[path[(i + 1) % path.len()]]);
+                    prop_assert!(items_side_ok(&items, a, b, eps), "side {} → {}", a, b);
+                }
+            }
+        }
 
         /// The shortest path over the cones' shortcuts is the fewest of every subset, and
         /// every side it takes passes the brute-force test.
