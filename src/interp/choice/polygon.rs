@@ -518,7 +518,8 @@ impl Cone {
     /// The points `d(0), …, d(run − 1)` (from the apex, in order along a straight line) that
     /// lie in the cone, as an interval of their indices: the cone is the intersection of two
     /// half-planes through the apex, and each holds a prefix or a suffix of points along a
-    /// line, found by bisection (a point at the apex is not in a narrowed cone).
+    /// line, found by bisection (a point at the apex, where both hold, is the caller's to
+    /// leave out: it is in the cone only while the cone is full).
     fn interval(&self, run: usize, d: impl Fn(usize) -> V) -> (usize, usize) {
         if self.full {
             return (0, run);
@@ -526,21 +527,10 @@ impl Cone {
         if self.empty || run == 0 {
             return (0, 0);
         }
-        let inside = |x: usize| {
-            let v = d(x);
-            v != V::zeros() && cross(self.lo, v) >= 0.0 && cross(v, self.hi) >= 0.0
-        };
         let (lo1, hi1) = half_interval(run, |x| cross(self.lo, d(x)) >= 0.0);
         let (lo2, hi2) = half_interval(run, |x| cross(d(x), self.hi) >= 0.0);
-        let (mut lo, mut hi) = (lo1.max(lo2), hi1.min(hi2).max(lo1.max(lo2)));
-        // the apex itself (an outline through the same point twice) at either end
-        if lo < hi && !inside(lo) {
-            lo += 1;
-        }
-        if lo < hi && !inside(hi - 1) {
-            hi -= 1;
-        }
-        (lo, hi)
+        let lo = lo1.max(lo2);
+        (lo, hi1.min(hi2).max(lo))
     }
 
     /// The cone narrowed to the rays that pass within `eps` of `w` (module docs).
@@ -773,7 +763,10 @@ impl Shortcuts {
                 let (first, last) = (t - t0, t - t0 + usize::from(items[k].candidate) * run);
                 bits.resize(start + last.div_ceil(64), 0);
                 for bit in first + lo..(first + hi).min(last) {
-                    bits[start + bit / 64] |= 1 << (bit % 64);
+                    // a side of zero length only while the cone is full (as `Cone::pass`)
+                    if cone.full || p[wrap(a + step + bit - first)] != p[a] {
+                        bits[start + bit / 64] |= 1 << (bit % 64);
+                    }
                 }
                 t += last - first;
                 step += run;
@@ -826,7 +819,8 @@ impl Shortcuts {
                     for x in lo..hi {
                         let t = t + x + 1;
                         let i = if j >= t { j - t } else { j + n - t };
-                        if forward(i, t) {
+                        let moved = cone.full || p[wrap(unrolled - step - x)] != p[b];
+                        if moved && forward(i, t) {
                             preds.push(t as u32);
                             reach[i] = reach[i].max(t as u32);
                         }
