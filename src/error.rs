@@ -412,6 +412,15 @@ pub enum Error {
         /// What is wrong there.
         message: String,
     },
+    /// A font's glyph could not be read: the bytes are not a font the reader knows, the font
+    /// has no glyph for the character, or the glyph has no outline (a space).
+    #[error("the glyph {ch:?}: {message}")]
+    Glyph {
+        /// The character asked for.
+        ch: char,
+        /// What is wrong.
+        message: String,
+    },
 }
 
 impl std::fmt::Debug for Error {

@@ -66,11 +66,7 @@ pub mod bezier;
 pub mod blending;
 mod branch;
 pub mod bspline;
-/// The old path of [`study::table_i`], kept for one release (README, Changelog).
-pub use study::table_i as comparison;
 pub mod curve;
-/// The old path of [`metrics::curve`], kept for one release (README, Changelog).
-pub use metrics::curve as curve_metrics;
 pub mod domain;
 pub mod error;
 pub mod grid;
@@ -114,8 +110,6 @@ pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::curve::HermiteCurve;
 pub use hermite::patch::HermitePatch;
-#[allow(deprecated)]
-pub use hermite::spline_surface::HermiteSpline;
 pub use hermite::spline_surface::HermiteSurface;
 pub use interp::angular::{
     circumcircle, guide_point, AngularSpline, HermiteMidpoint, InflectionPoint, InflectionRule,

@@ -30,9 +30,6 @@ pub use crate::{
 // formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and
 // `surface!`, a user surface written once for numbers and formulas alike
 pub use crate::{surface, symbolic};
-// the old name of `HermiteSurface`, for one release (deprecated: a use warns)
-#[allow(deprecated)]
-pub use crate::HermiteSpline;
 
 #[cfg(feature = "report")]
 pub use crate::report::{

@@ -248,7 +248,13 @@ fn a_polygon_with_few_vertices_gets_points_on_its_sides() {
     // the polygonal letter a's outer contour has 8 vertices; the Angular spline needs the 8
     // corners and a point inside every side (16 + 3 counted), more points than vertices
     let outer = &splinelab::seeds::seed004::polygonal_a()[0];
-    let tolerance = splinelab::study::table_i::contour_tolerance(std::slice::from_ref(outer));
+    let tolerance =
+        splinelab::study::outline::Tolerance::default().of(splinelab::study::outline::size(&[
+            splinelab::input::Contour {
+                points: outer.clone(),
+                closed: true,
+            },
+        ]));
     let target = Target::polyline(outer, true, tolerance).unwrap();
     // the Angular spline rounds its corners (G¹, issue 23): whatever it reports is a valid
     // spline measured as claimed; the cubic spline draws the same contour within 1 %
@@ -495,8 +501,9 @@ fn a_symmetric_start_reaches_the_superellipse_minimum() {
 #[cfg(feature = "report")]
 #[test]
 fn fewest_on_the_paper_shapes_as_outlines_gives_table_i_counts() {
-    use splinelab::report::user::fewest::{fewest, shape_outline, table_i_options, Tolerance};
     use splinelab::seeds::seed004::SHAPES;
+    use splinelab::study::outline::{fewest, Tolerance};
+    use splinelab::study::table_i::{shape_outline, table_i_options};
     let cells = cells();
     let families = [
         Family::Angular,

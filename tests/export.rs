@@ -544,7 +544,8 @@ mod curves {
 /// no font are typed errors naming the character.
 #[test]
 fn glyphs_of_a_font_file() {
-    use splinelab::report::seed004::letters::{glyph, letter_a};
+    use splinelab::input::font::glyph;
+    use splinelab::seeds::letters::letter_a;
     let font = std::fs::read(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/assets/fonts/DejaVuSans.ttf"

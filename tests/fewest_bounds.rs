@@ -57,13 +57,13 @@ proptest! {
     }
 }
 
-#[cfg(feature = "report")]
 mod thorough {
     use super::*;
     use splinelab::input::Contour;
-    use splinelab::report::user::fewest::{
-        default_options, fewest, fewest_in_stages, thorough_options, MethodFewest, Tolerance,
+    use splinelab::study::outline::{
+        default_options, fewest, fewest_in_stages, MethodStudy, Tolerance,
     };
+    use splinelab::study::table_i::thorough_options;
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(4))]
@@ -85,7 +85,7 @@ mod thorough {
             let thorough =
                 fewest_in_stages(&outline, tolerance, &families, &[first, then], &|_| {}).unwrap();
             for (q, t) in quick.methods.iter().zip(&thorough.methods) {
-                let rank = |m: &MethodFewest| {
+                let rank = |m: &MethodStudy| {
                     (!m.within_tolerance(), m.counted())
                 };
                 prop_assert!(rank(t) <= rank(q), "{:?}: {:?} against {:?}", q.family, rank(t), rank(q));

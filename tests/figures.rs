@@ -532,7 +532,7 @@ fn the_notebooks_try_it_helpers_hold_their_claims() {
 
 #[test]
 fn seed004_letters_and_method_comparisons_from_the_users_points() {
-    use splinelab::report::seed004::letters::letter_a;
+    use splinelab::seeds::letters::letter_a;
     use splinelab::{CubicEnd, Method};
     for version in 1..=4 {
         let l = letter_a(version).expect("letter");

@@ -286,17 +286,3 @@ fn spline_tabulation_matches_pointwise_evaluation_including_right_ends() {
         }
     }
 }
-
-/// The old name still builds the same surface (a deprecated alias for one release).
-#[test]
-#[allow(deprecated)]
-fn the_old_name_is_the_same_type() {
-    use splinelab::{HermiteSpline, HermiteSurface, Partition, Torus};
-    let (u, v) = (
-        Partition::new(vec![0.0, 0.5, 1.0]),
-        Partition::new(vec![0.0, 1.0]),
-    );
-    let old: HermiteSpline = HermiteSpline::from_surface(&Torus::default(), u.clone(), v.clone());
-    let new: HermiteSurface = HermiteSurface::from_surface(&Torus::default(), u, v);
-    assert_eq!(old, new);
-}

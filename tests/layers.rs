@@ -107,26 +107,3 @@ fn the_check_sees_a_layer_named_in_code_and_not_in_a_comment() {
     assert_eq!(found.len(), 1, "{found:?}");
     assert!(found[0].ends_with("let k = crate::symbolic::claim::piece(&x, &t); // crate::report"));
 }
-
-/// The modules moved by issue 28 keep their old paths for one release (README, Changelog).
-#[test]
-fn moved_modules_keep_their_old_paths() {
-    use splinelab::{comparison, curve_metrics, metrics, study};
-    assert_eq!(comparison::MAX_POINTS, study::table_i::MAX_POINTS);
-    assert_eq!(curve_metrics::LEAF, metrics::curve::LEAF);
-    assert_eq!(study::REPORT_PREC, study::hermite_error::REPORT_PREC);
-    let a = nalgebra::DMatrix::from_row_slice(2, 2, &[3.0, 0.0, 4.0, 5.0]);
-    assert_eq!(
-        metrics::matlab_norm(&a).unwrap(),
-        metrics::surface::matlab_norm(&a).unwrap()
-    );
-    let p = nalgebra::Vector2::new(0.0, 1.0);
-    let (a, b) = (
-        nalgebra::Vector2::new(-1.0, 0.0),
-        nalgebra::Vector2::new(1.0, 0.0),
-    );
-    assert_eq!(
-        curve_metrics::segment_distance(p, a, b),
-        metrics::curve::segment_distance(p, a, b)
-    );
-}

@@ -7,10 +7,12 @@ use nalgebra::Vector2;
 use splinelab::input::{Columns, Contour};
 use splinelab::interp::choice::{simplified, Family, Target};
 use splinelab::report::export::PlyEncoding;
-use splinelab::report::user::fewest::{self, fewest, Tolerance};
+use splinelab::report::user::fewest;
 use splinelab::report::user::fit::{Fit, FormulaStyle};
 use splinelab::report::user::outline::{read_outline, FileKind, ReadOptions};
 use splinelab::report::user::surface::{BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh};
+use splinelab::study::outline::{default_options, fewest, Tolerance};
+use splinelab::study::table_i::{shape_names, shape_outline};
 use splinelab::{CubicEnd, Error, Method, ParametricCurve};
 use std::path::Path;
 
@@ -267,7 +269,7 @@ fn fewest_on_an_outline_and_its_table_and_figures() {
         &outline,
         Tolerance::Fraction(0.01),
         &[Family::Linear, Family::Cardinal],
-        &fewest::default_options(),
+        &default_options(),
         &|p| {
             assert!(p.done <= p.total && p.total == 2);
             seen.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
@@ -287,7 +289,7 @@ fn fewest_on_an_outline_and_its_table_and_figures() {
         &[],
         Tolerance::default(),
         &[Family::Linear],
-        &fewest::default_options(),
+        &default_options(),
         &|_| {}
     )
     .is_err());
@@ -295,7 +297,7 @@ fn fewest_on_an_outline_and_its_table_and_figures() {
         &outline,
         Tolerance::Absolute(-1.0),
         &[Family::Linear],
-        &fewest::default_options(),
+        &default_options(),
         &|_| {}
     )
     .is_err());
@@ -303,7 +305,7 @@ fn fewest_on_an_outline_and_its_table_and_figures() {
         &outline,
         Tolerance::default(),
         &[],
-        &fewest::default_options(),
+        &default_options(),
         &|_| {}
     )
     .is_err());
@@ -330,13 +332,13 @@ fn tolerances_parse_as_percentages_or_distances() {
 
 #[test]
 fn the_paper_shapes_as_outlines_name_every_shape() {
-    for (column, name) in fewest::shape_names() {
-        let a = fewest::shape_outline(column).unwrap();
-        let b = fewest::shape_outline(&name).unwrap();
+    for (column, name) in shape_names() {
+        let a = shape_outline(column).unwrap();
+        let b = shape_outline(&name).unwrap();
         assert_eq!(a, b);
         assert!(a.points.len() > 2000);
     }
-    let err = fewest::shape_outline("heart").unwrap_err().to_string();
+    let err = shape_outline("heart").unwrap_err().to_string();
     assert!(
         err.contains("ellipse-0.7") && err.contains("Ellisse 1"),
         "{err}"
@@ -380,7 +382,7 @@ fn a_dense_outline_is_searched_coarsely_and_measured_exactly() {
         }],
         Tolerance::Absolute(0.01),
         &[Family::Cubic],
-        &fewest::default_options(),
+        &default_options(),
         &|_| {},
     )
     .unwrap();

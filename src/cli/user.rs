@@ -6,10 +6,12 @@ use clap::{ArgGroup, Args, ValueEnum};
 use splinelab::input::Columns;
 use splinelab::interp::choice::{Family, SearchOptions};
 use splinelab::report::export;
-use splinelab::report::user::fewest::{self, Progress, Tolerance};
+use splinelab::report::user::fewest;
 use splinelab::report::user::fit::{Fit, FormulaStyle};
 use splinelab::report::user::outline::{read_outline, read_points, ReadOptions};
 use splinelab::report::user::surface::{BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh};
+use splinelab::study::outline::{Progress, Tolerance};
+use splinelab::study::{self, table_i};
 use splinelab::{CubicEnd, Method};
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -160,10 +162,10 @@ pub struct FewestArgs {
     #[arg(long, value_name = "NAME")]
     shape: Option<String>,
     /// The most points a contour is tried with (as counted).
-    #[arg(long, default_value_t = fewest::DEFAULT_MAX_POINTS)]
+    #[arg(long, default_value_t = study::outline::DEFAULT_MAX_POINTS)]
     max_points: usize,
     /// Error evaluations per count and start, per free coordinate.
-    #[arg(long, default_value_t = fewest::DEFAULT_BUDGET)]
+    #[arg(long, default_value_t = study::outline::DEFAULT_BUDGET)]
     budget: usize,
     /// After the default search, Table I's search started from its answer (never worse): 40
     /// evaluations per coordinate, every count below the answer searched in full (slower;
@@ -332,7 +334,7 @@ impl Bar {
 pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
     let tolerance: Tolerance = args.tolerance.parse()?;
     let (outline, name) = match (&args.shape, &args.outline) {
-        (Some(shape), _) => (vec![fewest::shape_outline(shape)?], shape.clone()),
+        (Some(shape), _) => (vec![table_i::shape_outline(shape)?], shape.clone()),
         (None, Some(path)) => {
             let options = ReadOptions {
                 columns: columns(args.columns.as_deref()),
@@ -362,12 +364,12 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
     let first = SearchOptions {
         max_points: args.max_points,
         budget_per_coordinate: args.budget,
-        ..fewest::default_options()
+        ..study::outline::default_options()
     };
     let stages = if args.shape.is_some() {
-        vec![fewest::table_i_options()]
+        vec![table_i::table_i_options()]
     } else if args.thorough {
-        let then = fewest::thorough_options(&first);
+        let then = table_i::thorough_options(&first);
         vec![first, then]
     } else {
         vec![first]
@@ -388,10 +390,11 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
                 }
             });
         }
-        let found = fewest::fewest_in_stages(&outline, tolerance, &families, &stages, &|p| {
-            bar.done.store(p.done, Ordering::Relaxed);
-            bar.draw(Some(p));
-        });
+        let found =
+            study::outline::fewest_in_stages(&outline, tolerance, &families, &stages, &|p| {
+                bar.done.store(p.done, Ordering::Relaxed);
+                bar.draw(Some(p));
+            });
         bar.finished.store(true, Ordering::Relaxed);
         found
     });

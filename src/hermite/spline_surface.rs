@@ -33,11 +33,6 @@ pub struct HermiteSurface {
     nets: Vec<Net>,
 }
 
-/// The old name of [`HermiteSurface`] (a surface, where `HermiteCurve` is a curve), kept for
-/// one release.
-#[deprecated(since = "0.2.0", note = "renamed `HermiteSurface`")]
-pub type HermiteSpline = HermiteSurface;
-
 impl HermiteSurface {
     /// Interpolates `surface` on the partitions `u` (s direction) and `v` (t direction).
     /// The partials are computed once per node and shared by the patches that meet there.

@@ -1,5 +1,6 @@
-//! Users' data in: points from CSV ([`csv`]), outlines from SVG path data ([`svg_path`]) and
-//! SVG documents (`svg_document`, feature `svg`), drawn as polylines within a stated distance
+//! Users' data in: points from CSV ([`csv`]), outlines from SVG path data ([`svg_path`]), SVG
+//! documents (`svg_document`, feature `svg`) and fonts' glyphs (`font`, feature `fonts`), drawn
+//! as polylines within a stated distance
 //! ([`flatten`]). Every reader takes the text (reading the file is the caller's), refuses what
 //! it cannot read with [`crate::Error::Parse`] naming the line and column at fault, and returns
 //! nothing half-read.
@@ -8,6 +9,8 @@
 mod clip;
 pub mod csv;
 pub mod flatten;
+#[cfg(feature = "fonts")]
+pub mod font;
 #[cfg(feature = "svg")]
 pub mod svg_document;
 pub mod svg_path;

@@ -550,7 +550,7 @@ fn densified(ring: &[nalgebra::Vector2<f64>], n: usize) -> Vec<nalgebra::Vector2
 /// Sicily densified to `n` points (a digitised outline).
 fn fewest_outline(n: usize) -> Result<Runner> {
     use crate::interp::choice::Family;
-    use crate::report::user::fewest::{default_options, fewest, Tolerance};
+    use crate::study::outline::{default_options, fewest, Tolerance};
     let outline = [crate::input::Contour {
         points: densified(&crate::seeds::seed004::coastline(), n),
         closed: true,
@@ -568,14 +568,7 @@ fn fewest_outline(n: usize) -> Result<Runner> {
             &families,
             &default_options(),
             &|_| {},
-        )
-        .map_err(|e| match e {
-            crate::report::Error::Core(e) => e,
-            _ => crate::Error::Degenerate {
-                what: "fewest-outline workload",
-                reason: "the search failed outside the core",
-            },
-        })?;
+        )?;
         Ok(black_box(found.methods.iter().map(|m| m.counted()).sum()))
     }))
 }

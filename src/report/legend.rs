@@ -8,9 +8,6 @@
 //! assert_eq!(Method::Cubic { end: CubicEnd::Cyclic }.legend(), "Cubic cyclic");
 //! assert_eq!(Method::Cardinal { a: 0.83 }.legend(), "Cardinal (a = 0.83)");
 //! ```
-//!
-//! Until the next release each enum also keeps its old `label()` method (deprecated; with this
-//! feature only), which returns the same text.
 
 use crate::blending::functions::Blending;
 use crate::interp::choice::Start;
@@ -28,41 +25,30 @@ pub trait Legend {
     fn legend(&self) -> Cow<'static, str>;
 }
 
-/// Each enum's words (`text`), its [`Legend`], and its deprecated `label()`, from one match.
+/// Each enum's words as its [`Legend`], from one match.
 macro_rules! legend {
-    ($ty:ty, $label_self:ty, |$v:ident| $text:expr) => {
-        impl $ty {
-            fn text($v: &Self) -> &'static str {
-                $text
-            }
-
-            /// Legend text; moved to the report layer.
-            #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
-            pub fn label(self: $label_self) -> &'static str {
-                Self::text(&self)
-            }
-        }
-
+    ($ty:ty, |$v:ident| $text:expr) => {
         impl Legend for $ty {
             fn legend(&self) -> Cow<'static, str> {
-                Cow::Borrowed(Self::text(self))
+                let $v = self;
+                Cow::Borrowed($text)
             }
         }
     };
 }
 
-legend!(NodeFamily, Self, |f| match f {
+legend!(NodeFamily, |f| match f {
     NodeFamily::Equispaced => "equispaced",
     NodeFamily::Chebyshev => "Chebyshev",
 });
 
-legend!(CubicEnd, Self, |e| match e {
+legend!(CubicEnd, |e| match e {
     CubicEnd::Relaxed => "relaxed",
     CubicEnd::Cyclic => "cyclic",
     CubicEnd::Anticyclic => "anticyclic",
 });
 
-legend!(Start, Self, |s| match s {
+legend!(Start, |s| match s {
     Start::ArcLength => "arc length",
     Start::Turning => "turning",
     Start::ShapeParameter => "shape parameter",
@@ -75,51 +61,39 @@ legend!(Start, Self, |s| match s {
     Start::Pruned => "pruned",
 });
 
-legend!(Parametrization, Self, |p| match p {
+legend!(Parametrization, |p| match p {
     Parametrization::Uniform => "uniform",
     Parametrization::ChordLength => "chord length",
     Parametrization::Centripetal => "centripetal",
 });
 
-legend!(Blending, Self, |b| match b {
+legend!(Blending, |b| match b {
     Blending::Lagrange => "Lagrange 4-point",
     Blending::UniformBSpline => "uniform cubic B-spline",
 });
 
-legend!(PatchEvaluation, &Self, |e| match e {
+legend!(PatchEvaluation, |e| match e {
     PatchEvaluation::HermiteMatrix => "Hermite matrix form",
     PatchEvaluation::DeCasteljau => "de Casteljau, correct net",
     PatchEvaluation::ReportListing => "report's listing (Codice 7 as printed)",
 });
 
-legend!(Verdict, &Self, |v| match v {
+legend!(Verdict, |v| match v {
     Verdict::Agrees => "agrees",
     Verdict::Fewer => "fewer",
     Verdict::More => "more",
     Verdict::NoneWithin => "none within 1 %",
 });
 
-impl<const N: usize> EndCondition<N> {
-    fn text(&self) -> &'static str {
-        match self {
+impl<const N: usize> Legend for EndCondition<N> {
+    fn legend(&self) -> Cow<'static, str> {
+        Cow::Borrowed(match self {
             EndCondition::Clamped { .. } => "clamped",
             EndCondition::Natural => "natural (relaxed)",
             EndCondition::Periodic => "periodic (cyclic)",
             EndCondition::Cyclic => "cyclic (open ends)",
             EndCondition::Anticyclic => "anticyclic",
-        }
-    }
-
-    /// Legend text; moved to the report layer.
-    #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
-    pub fn label(&self) -> &'static str {
-        self.text()
-    }
-}
-
-impl<const N: usize> Legend for EndCondition<N> {
-    fn legend(&self) -> Cow<'static, str> {
-        Cow::Borrowed(self.text())
+        })
     }
 }
 
@@ -136,11 +110,14 @@ impl Legend for Method {
     }
 }
 
-impl Method {
-    /// Legend text; moved to the report layer.
-    #[deprecated(note = "legend text is the report layer's: use `report::Legend::legend`")]
-    pub fn label(&self) -> String {
-        self.legend().into_owned()
+/// A method's parameter as seed 004 prints it in Table I (`a = 0.83`, `relaxed`, `order 9`,
+/// `—` for a method without one).
+pub fn parameter_legend(method: &Method) -> String {
+    match *method {
+        Method::Angular | Method::Linear => "—".into(),
+        Method::Cardinal { a } => format!("a = {a}"),
+        Method::Cubic { end } => end.legend().into(),
+        Method::BSpline { order } => format!("order {order}"),
     }
 }
 
@@ -152,16 +129,12 @@ mod tests {
     use crate::interp::param::Parametrization;
     use crate::study::hermite_error::PatchEvaluation;
 
-    /// The deprecated `label()` of one release gives the legend's text, and the texts of an
-    /// enum's variants differ (a legend that named two choices alike would mislead).
+    /// The texts of an enum's variants differ (a legend that named two choices alike would
+    /// mislead), and a method's legend names its end condition.
     #[test]
-    #[allow(deprecated)]
-    fn old_labels_are_the_legends_and_variants_are_told_apart() {
+    fn variants_are_told_apart() {
         let ends: Vec<String> = CubicEnd::ALL.iter().map(|e| e.legend().into()).collect();
         assert_eq!(ends, ["relaxed", "cyclic", "anticyclic"]);
-        for e in CubicEnd::ALL {
-            assert_eq!(e.label(), e.legend());
-        }
         let params: Vec<String> = Parametrization::ALL
             .iter()
             .map(|p| p.legend().into())
@@ -170,13 +143,17 @@ mod tests {
         assert!(params
             .iter()
             .all(|p| params.iter().filter(|q| *q == p).count() == 1));
-        for p in PatchEvaluation::ALL {
-            assert_eq!(p.label(), p.legend());
-        }
+        let evaluations: Vec<String> = PatchEvaluation::ALL
+            .iter()
+            .map(|p| p.legend().into())
+            .collect();
+        assert!(evaluations
+            .iter()
+            .all(|p| evaluations.iter().filter(|q| *q == p).count() == 1));
         let m = Method::Cubic {
             end: CubicEnd::Anticyclic,
         };
-        assert_eq!(m.label(), "Cubic anticyclic");
-        assert_eq!(EndCondition::<2>::Natural.label(), "natural (relaxed)");
+        assert_eq!(m.legend(), "Cubic anticyclic");
+        assert_eq!(EndCondition::<2>::Natural.legend(), "natural (relaxed)");
     }
 }

@@ -9,13 +9,22 @@
 //! bounding-box side ([`crate::shapes::TOLERANCE_FRACTION`], spec decision A12).
 
 use crate::error::{Error, Result};
+use crate::input::Contour;
 use crate::interp::choice::{
-    fewest_points, search, Attempt, Choice, Family, Measure, Minimality, SearchOptions, Start,
-    Target,
+    search, Attempt, Choice, Family, Measure, Minimality, SearchOptions, Start, Target,
 };
-use crate::interp::methods::Method;
-use crate::seeds::seed004::{paper_points, PrintedCell, SHAPES, TABLE_I};
-use crate::shapes::{Shape, TOLERANCE_FRACTION};
+use crate::interp::methods::{CubicEnd, Method};
+#[cfg(feature = "fonts")]
+use crate::seeds::letters::letter_a;
+#[cfg(feature = "fonts")]
+use crate::seeds::seed004::coastline;
+#[cfg(feature = "fonts")]
+use crate::seeds::seed004::LETTER_FIGURES;
+use crate::seeds::seed004::{decimate, paper_points, PrintedCell, COAST_STEP, SHAPES, TABLE_I};
+use crate::shapes::Shape;
+use crate::study::outline::MethodStudy;
+#[cfg(feature = "fonts")]
+use crate::study::outline::{default_options, fewest, Tolerance};
 use nalgebra::Vector2;
 
 /// Segments of each shape's reference polyline.
@@ -127,7 +136,7 @@ impl CellStudy {
 ///
 /// # Errors
 /// [`Error::IndexOutOfRange`] for a cell whose column names no shape of [`SHAPES`]; the
-/// errors of [`paper_points`], [`Target::shape`], [`Target::measure`] and [`fewest_points`].
+/// errors of [`paper_points`], [`Target::shape`], [`Target::measure`] and [`search`].
 pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStudy> {
     let (column, shape) = *SHAPES.get(cell.column).ok_or(Error::IndexOutOfRange {
         what: "Table I shape column",
@@ -182,10 +191,7 @@ pub fn study_cell(cell: &PrintedCell, options: &SearchOptions) -> Result<CellStu
 /// # Errors
 /// As [`study_cell`].
 pub fn table_i() -> Result<Vec<CellStudy>> {
-    let options = SearchOptions {
-        max_points: MAX_POINTS,
-        ..SearchOptions::default()
-    };
+    let options = table_i_options();
     crate::parallel::map(&TABLE_I, |cell| study_cell(cell, &options))
         .into_iter()
         .collect()
@@ -220,7 +226,7 @@ pub struct CrossStudy {
 /// B-spline's vertices count as points on the shape.
 ///
 /// # Errors
-/// [`crate::Error::TooFewPoints`] for cells that are not whole columns of four methods;
+/// [`Error::TooFewPoints`] for cells that are not whole columns of four methods;
 /// the errors of [`Target::shape`].
 pub fn cross_methods(cells: &[CellStudy]) -> Result<Vec<CrossStudy>> {
     let mut out = Vec::new();
@@ -282,74 +288,182 @@ fn exchanged(source: &Choice, drawer: &Choice, closed: bool) -> Vec<Vector2<f64>
     on_shape
 }
 
-/// The fewest points of one method for a shape made of closed contours.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ContourStudy {
-    /// The method family.
-    pub family: Family,
-    /// The choice for each contour.
-    pub contours: Vec<Choice>,
-    /// The tolerance used.
-    pub tolerance: f64,
+/// The names [`shape_outline`] takes: the paper's column names (`Ellisse 1`) and our shape
+/// names (`ellipse-0.7`), one pair per Table I column.
+pub fn shape_names() -> Vec<(&'static str, String)> {
+    SHAPES.iter().map(|(c, s)| (*c, s.name())).collect()
 }
 
-impl ContourStudy {
-    /// The points of all contours, as counted.
-    pub fn counted(&self) -> usize {
-        self.contours.iter().map(|c| c.measure.counted).sum()
-    }
-
-    /// The largest error over the contours.
-    pub fn error(&self) -> f64 {
-        self.contours
-            .iter()
-            .map(|c| c.measure.distances.hausdorff())
-            .fold(0.0, f64::max)
-    }
-
-    /// Whether every contour is within the tolerance.
-    pub fn within_tolerance(&self) -> bool {
-        self.contours.iter().all(|c| c.within_tolerance)
-    }
-}
-
-/// 1 % of the larger side of the bounding box of all `contours` (0 for none).
-pub fn contour_tolerance(contours: &[Vec<Vector2<f64>>]) -> f64 {
-    let (lo, hi) = contours.iter().flatten().fold(
-        (
-            Vector2::repeat(f64::INFINITY),
-            Vector2::repeat(f64::NEG_INFINITY),
-        ),
-        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
-    );
-    let side = (hi - lo).amax();
-    if side.is_finite() {
-        TOLERANCE_FRACTION * side
-    } else {
-        0.0
-    }
-}
-
-/// The fewest points with which `family` draws each closed contour of `contours` (dense
-/// polylines) within `tolerance`, searched contour by contour on all cores.
+/// The outline of the paper's shape `name` (a column name or a shape name:
+/// [`shape_names`]): its reference polyline as Table I measures against
+/// ([`crate::shapes::Shape::reference`] with [`REFERENCE_SEGMENTS`] segments), one contour,
+/// closed for the closed shapes. [`crate::study::outline::fewest`] on it, with Table I's options, finds Table I's
+/// counts (tested): the paper's shapes go through the same path as a user's outline.
 ///
 /// # Errors
-/// The errors of [`Target::polyline`] and [`fewest_points`].
-pub fn fewest_for_contours(
-    contours: &[Vec<Vector2<f64>>],
-    tolerance: f64,
-    family: Family,
-    options: &SearchOptions,
-) -> Result<ContourStudy> {
-    let choices = crate::parallel::map(contours, |c| {
-        let target = Target::polyline(c, true, tolerance)?;
-        fewest_points(&target, family, options)
-    });
-    Ok(ContourStudy {
-        family,
-        contours: choices.into_iter().collect::<Result<_>>()?,
-        tolerance,
+/// [`Error::Parse`] for a name that is no shape of Table I (the message lists them).
+pub fn shape_outline(name: &str) -> Result<Contour> {
+    let (_, shape) = SHAPES
+        .iter()
+        .find(|(c, s)| c.eq_ignore_ascii_case(name) || s.name().eq_ignore_ascii_case(name))
+        .ok_or_else(|| Error::Parse {
+            what: "shape name",
+            line: 1,
+            column: 1,
+            message: format!(
+                "{name:?} is no shape of Table I; the shapes are {}",
+                shape_names()
+                    .iter()
+                    .map(|(c, s)| format!("{s} ({c})"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        })?;
+    Ok(Contour {
+        points: shape.reference(REFERENCE_SEGMENTS)?,
+        closed: shape.is_closed(),
     })
+}
+
+/// Table I's search options ([`crate::study::table_i::table_i`]): up to [`MAX_POINTS`]
+/// points, the default budget, every count below the answer searched.
+pub fn table_i_options() -> SearchOptions {
+    SearchOptions {
+        max_points: MAX_POINTS,
+        ..SearchOptions::default()
+    }
+}
+
+/// The second stage of `splinelab fewest --thorough` ([`crate::study::outline::fewest_in_stages`], after `first`):
+/// Table I's budget and every count below the answer searched, as many points as `first`
+/// allows (at least Table I's [`MAX_POINTS`]).
+pub fn thorough_options(first: &SearchOptions) -> SearchOptions {
+    SearchOptions {
+        max_points: first.max_points.max(MAX_POINTS),
+        ..SearchOptions::default()
+    }
+}
+/// The paper's coastline counts (Angular 92, cardinal 81, relaxed cubic 84) and its 1-in-50
+/// decimation's methods (with linear interpolation, no printed count).
+pub const COAST_PRINTED: [(Family, Option<usize>); 4] = [
+    (Family::Angular, Some(92)),
+    (Family::Cardinal, Some(81)),
+    (Family::Cubic, Some(84)),
+    (Family::Linear, None),
+];
+
+/// One method's fewest points on one of seed 004's figures made of contours (a letter, the
+/// coastline), beside the paper's count.
+#[derive(Debug, Clone)]
+pub struct FigureStudy {
+    /// The figure, in words (`letter a 1 (DejaVu Sans)`, `Sicily coastline`).
+    pub figure: String,
+    /// The paper's count, if it prints one.
+    pub printed: Option<usize>,
+    /// The figure's size (the larger side of its bounding box) and tolerance.
+    pub size: f64,
+    /// The tolerance, a distance: 1 % of the size.
+    pub tolerance: f64,
+    /// The search on every contour ([`crate::study::outline::fewest`]).
+    pub study: MethodStudy,
+    /// For the coastline: the error of the paper's 1-in-50 experiment under this method
+    /// ([`decimated_error`]).
+    pub decimated: Option<f64>,
+}
+
+/// The fewest points per method for the four letters "a" (the paper's three methods each,
+/// [`LETTER_FIGURES`]) and the coastline (its four, [`COAST_PRINTED`]), each within 1 % of its
+/// size: [`crate::study::outline::fewest`] with [`default_options`], the command line's
+/// `fewest`, on each figure's closed contours.
+///
+/// # Errors
+/// The errors of [`letter_a`] and of the searches.
+#[cfg(feature = "fonts")]
+pub fn letters_and_coast() -> Result<Vec<FigureStudy>> {
+    let mut out = Vec::new();
+    for (v, methods) in LETTER_FIGURES.iter().enumerate() {
+        let letter = letter_a(v + 1)?;
+        let contours: Vec<Contour> = letter
+            .contours
+            .iter()
+            .map(|c| Contour {
+                points: c.outline.clone(),
+                closed: true,
+            })
+            .collect();
+        let methods: Vec<_> = methods
+            .iter()
+            .map(|&(m, printed)| (Family::of(&m).unwrap_or(Family::Linear), Some(printed)))
+            .collect();
+        let name = format!("letter a {} ({})", v + 1, letter.name);
+        out.extend(figure_study(&name, &contours, &methods, None)?);
+    }
+    let coast = coastline();
+    let contour = Contour {
+        points: coast.clone(),
+        closed: true,
+    };
+    out.extend(figure_study(
+        "Sicily coastline",
+        &[contour],
+        &COAST_PRINTED,
+        Some(&coast),
+    )?);
+    Ok(out)
+}
+
+/// One figure of [`letters_and_coast`]: each of `methods` (a family and the paper's count)
+/// searched on `contours`, with the decimated `coast`'s error where given.
+#[cfg(feature = "fonts")]
+fn figure_study(
+    figure: &str,
+    contours: &[Contour],
+    methods: &[(Family, Option<usize>)],
+    coast: Option<&[Vector2<f64>]>,
+) -> Result<Vec<FigureStudy>> {
+    let families: Vec<Family> = methods.iter().map(|m| m.0).collect();
+    let found = fewest(
+        contours,
+        Tolerance::default(),
+        &families,
+        &default_options(),
+        &|_| {},
+    )?;
+    found
+        .methods
+        .into_iter()
+        .zip(methods)
+        .map(|(study, &(family, printed))| {
+            Ok(FigureStudy {
+                figure: figure.into(),
+                printed,
+                size: found.size,
+                tolerance: found.tolerance,
+                decimated: coast.map(|c| decimated_error(family, c)).transpose()?,
+                study,
+            })
+        })
+        .collect()
+}
+
+/// The paper's 1-in-50 experiment on our coastline: every [`COAST_STEP`]th point of the ring
+/// under the method of `family` the paper shows (the Angular, the cardinal with `a = 1`, the
+/// cyclic cubic; any other family: the polygon), its symmetric Hausdorff distance to the ring.
+///
+/// # Errors
+/// The errors of [`Target::polyline`] and [`Target::measure`] on `coast`.
+pub fn decimated_error(family: Family, coast: &[Vector2<f64>]) -> Result<f64> {
+    let method = match family {
+        Family::Angular => Method::Angular,
+        Family::Cardinal => Method::Cardinal { a: 1.0 },
+        Family::Cubic => Method::Cubic {
+            end: CubicEnd::Cyclic,
+        },
+        _ => Method::Linear,
+    };
+    let target = Target::polyline(coast, true, 1.0)?;
+    let points = decimate(coast, COAST_STEP);
+    Ok(target.measure(&method, &points)?.distances.hausdorff())
 }
 
 /// How many pieces of `method`'s curve through `points` change when the point `index` moves
@@ -358,8 +472,8 @@ pub fn fewest_for_contours(
 /// points' extent.
 ///
 /// # Errors
-/// [`crate::Error::IndexOutOfRange`] for an index beyond the points; the errors of
-/// [`Method::curve`] for either curve; [`crate::Error::CountMismatch`] if the two curves'
+/// [`Error::IndexOutOfRange`] for an index beyond the points; the errors of
+/// [`Method::curve`] for either curve; [`Error::CountMismatch`] if the two curves'
 /// pieces differ in number (a B-spline's knots do not move with its points, so they never
 /// do).
 pub fn pieces_changed(
@@ -370,7 +484,7 @@ pub fn pieces_changed(
     delta: Vector2<f64>,
 ) -> Result<usize> {
     if index >= points.len() {
-        return Err(crate::Error::IndexOutOfRange {
+        return Err(Error::IndexOutOfRange {
             what: "moved point",
             index,
             len: points.len(),
@@ -381,7 +495,7 @@ pub fn pieces_changed(
     let (a, b) = (method.curve(points, closed)?, method.curve(&moved, closed)?);
     let (ba, bb) = (a.breaks(), b.breaks());
     if ba.len() != bb.len() {
-        return Err(crate::Error::CountMismatch {
+        return Err(Error::CountMismatch {
             what: "pieces of the moved curve",
             expected: ba.len(),
             got: bb.len(),

@@ -224,7 +224,7 @@ fn report_cases() -> Vec<Case> {
             )
         }),
         case("input::glyph_refusals", || {
-            use splinelab::report::seed004::letters::glyph;
+            use splinelab::input::font::glyph;
             let font: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
             for (bytes, ch) in [
                 (font, '\u{10FFFF}'),
@@ -233,7 +233,7 @@ fn report_cases() -> Vec<Case> {
                 (&[][..], 'a'),
                 (&font[..100], 'a'),
             ] {
-                expect_err!(glyph(bytes, ch), splinelab::report::Error::Figure { .. })?;
+                expect_err!(glyph(bytes, ch), Error::Glyph { .. })?;
             }
             Ok(())
         }),
@@ -437,7 +437,7 @@ fn report_cases() -> Vec<Case> {
         case("user::fewest_requests", || {
             use splinelab::input::Contour;
             use splinelab::interp::choice::Family;
-            use splinelab::report::user::fewest::{default_options, fewest, Tolerance};
+            use splinelab::study::outline::{default_options, fewest, Tolerance};
             let line = Contour {
                 points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
                 closed: false,
@@ -479,9 +479,8 @@ fn report_cases() -> Vec<Case> {
         case("user::fewest_in_stages_requests", || {
             use splinelab::input::Contour;
             use splinelab::interp::choice::Family;
-            use splinelab::report::user::fewest::{
-                default_options, fewest_in_stages, thorough_options, Tolerance,
-            };
+            use splinelab::study::outline::{default_options, fewest_in_stages, Tolerance};
+            use splinelab::study::table_i::thorough_options;
             let line = Contour {
                 points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
                 closed: false,

@@ -1,9 +1,15 @@
 //! Seed 004, Barsi & Milanesi's comparison of interpolation methods: the Bézier and B-spline
 //! figures, the Angular spline's construction, Table I's shapes under the four methods, the
 //! cross-method experiment, the letter "a" and the Sicilian coastline.
+//!
+//! - [`figures`]: every figure but Table I's grid;
+//! - [`table_i`]: Table I, its grid of panels, the cross-method table;
+//! - [`fewest`]: the letters' and the coastline's fewest points;
+//! - [`conclusions`]: the paper's conclusions beside the evidence.
 
+pub mod conclusions;
+pub mod fewest;
 pub mod figures;
-pub mod letters;
 pub mod table_i;
 
 use crate::report::Output;
@@ -153,11 +159,11 @@ pub const OUTPUTS: &[Output] = &[
     Output::table(
         "table-seed004-fewest",
         "Seed 004: the fewest points per method for the letters a and the Sicilian coast",
-        table_i::letters_and_coast,
+        fewest::letters_and_coast,
     ),
     Output::table(
         "table-seed004-conclusions",
         "Seed 004: the paper's conclusions beside the evidence of our runs",
-        table_i::conclusions,
+        conclusions::conclusions,
     ),
 ];

@@ -154,7 +154,7 @@ impl Fit {
     /// # Errors
     /// As [`Fit::bezier`].
     pub fn svg_document(&self, tolerance: Option<f64>) -> Result<String> {
-        let size = super::outline::size(&[crate::input::Contour {
+        let size = crate::study::outline::size(&[crate::input::Contour {
             points: self.drawn_points(),
             closed: false,
         }])

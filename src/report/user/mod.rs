@@ -4,14 +4,13 @@
 //!
 //! - [`fit`]: one of seed 004's methods through a user's points — the curve sampled (CSV),
 //!   drawn over its points, as SVG cubic Béziers, its formulas piece by piece.
-//! - [`fewest`](mod@fewest): Table I's point search on a user's outline — for each method the
-//!   fewest points within a tolerance, a table and one figure per method.
+//! - [`fewest`]: the fewest points on a user's outline ([`crate::study::outline::fewest`]) as a
+//!   table and one figure per method.
 //! - [`surface`]: a Hermite spline surface of a built-in surface on a user's partition, as a
 //!   mesh for OBJ, PLY or STL.
 //!
 //! - [`outline`]: points and outlines from files by their extension — CSV, an SVG document, SVG
-//!   path data, a font's glyph ([`crate::input`]'s readers and
-//!   [`crate::report::seed004::letters::glyph`]).
+//!   path data, a font's glyph ([`crate::input`]'s readers).
 //!
 //! Writing the files is [`crate::report::export`]'s.
 

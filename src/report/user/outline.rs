@@ -5,6 +5,7 @@
 use crate::input::Contour;
 use crate::input::{contours_from_svg_path, points_from_csv, read_svg_document, Columns};
 use crate::report::error::{Error, Result};
+use crate::study::outline::size;
 use nalgebra::Vector2;
 use std::path::Path;
 
@@ -148,7 +149,7 @@ pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> 
 /// # Errors
 /// As [`FileKind::of`], [`read_text`], [`points_from_csv`],
 /// [`read_svg_document`], [`contours_from_svg_path`] and
-/// [`crate::report::seed004::letters::glyph`];
+/// [`crate::input::font::glyph`];
 /// [`crate::Error::Parse`] for a font without `options.glyph`.
 pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> {
     let kind = FileKind::of(path)?;
@@ -201,7 +202,7 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                 message: "a font needs the character to read (--glyph)".into(),
             })?;
             let font = read_bytes(path)?;
-            Ok(crate::report::seed004::letters::glyph(&font, ch)?
+            Ok(crate::input::font::glyph(&font, ch)?
                 .into_iter()
                 .map(|c| Contour {
                     points: c.outline,
@@ -209,23 +210,5 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                 })
                 .collect())
         }
-    }
-}
-
-/// The larger side of the bounding box of `contours`' points (0 for none).
-pub fn size(contours: &[Contour]) -> f64 {
-    let all = contours.iter().flat_map(|c| c.points.iter());
-    let (lo, hi) = all.fold(
-        (
-            Vector2::repeat(f64::INFINITY),
-            Vector2::repeat(f64::NEG_INFINITY),
-        ),
-        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
-    );
-    let side = (hi - lo).amax();
-    if side.is_finite() {
-        side
-    } else {
-        0.0
     }
 }

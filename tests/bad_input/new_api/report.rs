@@ -7,9 +7,10 @@ use splinelab::report::figure::{Figure, MAX_SIDE};
 use splinelab::report::heatmap::{ColorScale, HeatMap};
 use splinelab::report::plot2d::{self, Figure2d, Panel, Series, Style, MAX_PANELS};
 use splinelab::report::render3d::{Marker, Segment, View, SCENE_LIMIT};
-use splinelab::report::seed004::{figures, letters::letter_a};
+use splinelab::report::seed004::figures;
 use splinelab::report::table::{self, Table};
 use splinelab::report::Error as RError;
+use splinelab::seeds::letters::letter_a;
 use splinelab::CoordErrors;
 
 pub(super) fn cases() -> Vec<Case> {
@@ -1175,8 +1176,11 @@ fn letters_cases() -> Vec<Case> {
     vec![
         case("letters::unknown_versions", || {
             for v in [0, 5, usize::MAX] {
-                expect_err!(letter_a(v), RError::UnknownId { .. })?;
-                expect_err!(figures::letter(v), RError::UnknownId { .. })?;
+                expect_err!(letter_a(v), Error::IndexOutOfRange { .. })?;
+                expect_err!(
+                    figures::letter(v),
+                    RError::Core(Error::IndexOutOfRange { .. })
+                )?;
             }
             Ok(())
         }),

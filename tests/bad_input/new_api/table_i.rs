@@ -1,13 +1,25 @@
-//! comparison: study_cell, cross_methods, contour_tolerance, fewest_for_contours, pieces_changed
+//! The studies of seed 004: study_cell, cross_methods, pieces_changed; the outline search's
+//! size and fewest.
 
 use super::*;
+use splinelab::input::Contour;
+
+/// Each point list as a closed contour.
+fn closed(contours: Vec<Vec<Vector2<f64>>>) -> Vec<Contour> {
+    contours
+        .into_iter()
+        .map(|points| Contour {
+            points,
+            closed: true,
+        })
+        .collect()
+}
 
 pub(super) fn cases() -> Vec<Case> {
-    use splinelab::study::table_i::{
-        contour_tolerance, cross_methods, fewest_for_contours, pieces_changed, study_cell,
-    };
+    use splinelab::study::outline::{fewest, size, Tolerance};
+    use splinelab::study::table_i::{cross_methods, pieces_changed, study_cell};
     vec![
-        case("comparison::study_cell_column_out_of_range", || {
+        case("table_i::study_cell_column_out_of_range", || {
             // a cell of no column is refused, not studied as another column
             let mut cell = TABLE_I[0];
             cell.column = 99;
@@ -16,97 +28,114 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::IndexOutOfRange { index: 99, .. }
             )
         }),
-        risky("comparison::study_cell_usize_max_points", || {
+        risky("table_i::study_cell_usize_max_points", || {
             let mut cell = TABLE_I[3];
             cell.points = usize::MAX;
             expect_err!(study_cell(&cell, &options(12)), Error::TooLarge { .. })
         }),
-        case("comparison::study_cell_bspline_order_zero", || {
+        case("table_i::study_cell_bspline_order_zero", || {
             let mut cell = TABLE_I[30];
             cell.method = Method::BSpline { order: 0 };
             expect_err!(study_cell(&cell, &options(12)), Error::DegreeTooLow { .. })
         }),
-        case("comparison::study_cell_cardinal_nan_a", || {
+        case("table_i::study_cell_cardinal_nan_a", || {
             let mut cell = TABLE_I[12];
             cell.method = Method::Cardinal { a: f64::NAN };
             expect_err!(study_cell(&cell, &options(12)), Error::Negative { .. })
         }),
-        case("comparison::cross_methods_of_no_cells", || {
+        case("table_i::cross_methods_of_no_cells", || {
             let c = ok(cross_methods(&[]))?;
             ensure!(c.is_empty(), "{} rows", c.len());
             Ok(())
         }),
-        case("comparison::contour_tolerance_degenerate", || {
-            ensure!(contour_tolerance(&[]) == 0.0, "no contours");
-            ensure!(contour_tolerance(&[vec![]]) == 0.0, "an empty contour");
-            let inf = contour_tolerance(&[vec![v2(0.0, 0.0), v2(f64::INFINITY, 1.0)]]);
+        case("outline::size_degenerate", || {
+            ensure!(size(&[]) == 0.0, "no contours");
+            ensure!(size(&closed(vec![vec![]])) == 0.0, "an empty contour");
+            let inf = size(&closed(vec![vec![v2(0.0, 0.0), v2(f64::INFINITY, 1.0)]]));
             ensure!(inf == 0.0, "infinite: {inf}");
-            let max = contour_tolerance(&[vec![v2(-f64::MAX, 0.0), v2(f64::MAX, 1.0)]]);
+            let max = size(&closed(vec![vec![v2(-f64::MAX, 0.0), v2(f64::MAX, 1.0)]]));
             ensure!(max.is_finite() && max >= 0.0, "±f64::MAX: {max}");
-            let nan = contour_tolerance(&[vec![v2(0.0, 0.0), v2(f64::NAN, 1.0)]]);
+            let nan = size(&closed(vec![vec![v2(0.0, 0.0), v2(f64::NAN, 1.0)]]));
             ensure!(nan.is_finite() && nan >= 0.0, "NaN: {nan}");
             Ok(())
         }),
-        case("comparison::contour_tolerance_of_the_polygonal_a", || {
-            let t = contour_tolerance(&polygonal_a());
+        case("outline::size_of_the_polygonal_a", || {
+            let t = Tolerance::default().of(size(&closed(polygonal_a())));
             ensure!((t - 0.01).abs() < 1e-15, "{t}");
             let tiny: Vec<Vec<Vector2<f64>>> = polygonal_a()
                 .into_iter()
                 .map(|c| c.into_iter().map(|p| p * 1e-310).collect())
                 .collect();
-            let t = contour_tolerance(&tiny);
+            let t = size(&closed(tiny));
             ensure!(t > 0.0 && t.is_finite(), "subnormal: {t:e}");
             Ok(())
         }),
-        case("comparison::fewest_for_contours_empty", || {
-            let s = ok(fewest_for_contours(&[], 0.1, Family::Linear, &options(12)))?;
-            ensure!(
-                s.contours.is_empty()
-                    && s.counted() == 0
-                    && s.error() == 0.0
-                    && s.within_tolerance(),
-                "{s:?}"
-            );
-            Ok(())
+        case("outline::fewest_of_no_contours", || {
+            expect_err!(
+                fewest(
+                    &[],
+                    Tolerance::Absolute(0.1),
+                    &[Family::Linear],
+                    &options(12),
+                    &|_| {}
+                ),
+                Error::TooFewPoints { .. }
+            )
         }),
-        case("comparison::fewest_for_contours_bad_tolerance", || {
+        case("outline::fewest_bad_tolerance", || {
             for tol in [0.0, -1.0, f64::NAN, f64::INFINITY] {
                 expect_err!(
-                    fewest_for_contours(&polygonal_a(), tol, Family::Linear, &options(12)),
+                    fewest(
+                        &closed(polygonal_a()),
+                        Tolerance::Absolute(tol),
+                        &[Family::Linear],
+                        &options(12),
+                        &|_| {}
+                    ),
                     Error::NotPositive { .. }
                 )?;
             }
             Ok(())
         }),
-        case("comparison::fewest_for_contours_bad_contours", || {
+        case("outline::fewest_bad_contours", || {
             let mut a = polygonal_a();
             a[1][2].x = f64::NAN;
+            let linear = [Family::Linear];
             expect_err!(
-                fewest_for_contours(&a, 0.01, Family::Linear, &options(12)),
+                fewest(
+                    &closed(a),
+                    Tolerance::Absolute(0.01),
+                    &linear,
+                    &options(12),
+                    &|_| {}
+                ),
                 Error::NonFinite { .. }
             )?;
             expect_err!(
-                fewest_for_contours(
-                    &[four_points()[..2].to_vec()],
-                    0.01,
-                    Family::Linear,
-                    &options(12)
+                fewest(
+                    &closed(vec![four_points()[..2].to_vec()]),
+                    Tolerance::Absolute(0.01),
+                    &linear,
+                    &options(12),
+                    &|_| {}
                 ),
                 Error::TooFewPoints { .. }
             )
         }),
-        case("comparison::fewest_for_contours_polygonal_a", || {
-            let s = ok(fewest_for_contours(
-                &polygonal_a(),
-                0.01,
-                Family::Linear,
+        case("outline::fewest_polygonal_a", || {
+            let s = ok(fewest(
+                &closed(polygonal_a()),
+                Tolerance::Absolute(0.01),
+                &[Family::Linear],
                 &options(20),
+                &|_| {},
             ))?;
-            ensure!(s.within_tolerance() && s.error() <= 0.01, "{s:?}");
-            ensure!(s.counted() == 14, "{} points", s.counted());
+            let m = &s.methods[0];
+            ensure!(m.within_tolerance() && m.error() <= 0.01, "{s:?}");
+            ensure!(m.counted() == 14, "{} points", m.counted());
             Ok(())
         }),
-        case("comparison::pieces_changed_index_out_of_range", || {
+        case("table_i::pieces_changed_index_out_of_range", || {
             let p = six_points(1.0);
             for index in [6, usize::MAX] {
                 expect_err!(
@@ -119,7 +148,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::IndexOutOfRange { len: 0, .. }
             )
         }),
-        case("comparison::pieces_changed_sweep_non_finite_delta", || {
+        case("table_i::pieces_changed_sweep_non_finite_delta", || {
             sweep(2, |bad, k| {
                 let mut d = [0.1, 0.1];
                 d[k] = bad;
@@ -133,7 +162,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             })
         }),
-        case("comparison::pieces_changed_huge_delta", || {
+        case("table_i::pieces_changed_huge_delta", || {
             expect_err!(
                 pieces_changed(
                     &Method::Linear,
@@ -145,33 +174,30 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::CoordinateTooLarge { .. }
             )
         }),
-        case(
-            "comparison::pieces_changed_zero_and_subnormal_delta",
-            || {
-                for m in all_methods() {
-                    let n = ok(pieces_changed(&m, &six_points(1.0), false, 2, v2(0.0, 0.0)))?;
-                    ensure!(
-                        n == 0,
-                        "{}: {n} pieces change without a move",
-                        format_args!("{:?}", m)
-                    );
-                    let n = ok(pieces_changed(
-                        &m,
-                        &six_points(1.0),
-                        true,
-                        2,
-                        v2(5e-324, 0.0),
-                    ))?;
-                    ensure!(
-                        n == 0,
-                        "{}: {n} pieces change by 5e-324",
-                        format_args!("{:?}", m)
-                    );
-                }
-                Ok(())
-            },
-        ),
-        case("comparison::pieces_changed_angular_is_local", || {
+        case("table_i::pieces_changed_zero_and_subnormal_delta", || {
+            for m in all_methods() {
+                let n = ok(pieces_changed(&m, &six_points(1.0), false, 2, v2(0.0, 0.0)))?;
+                ensure!(
+                    n == 0,
+                    "{}: {n} pieces change without a move",
+                    format_args!("{:?}", m)
+                );
+                let n = ok(pieces_changed(
+                    &m,
+                    &six_points(1.0),
+                    true,
+                    2,
+                    v2(5e-324, 0.0),
+                ))?;
+                ensure!(
+                    n == 0,
+                    "{}: {n} pieces change by 5e-324",
+                    format_args!("{:?}", m)
+                );
+            }
+            Ok(())
+        }),
+        case("table_i::pieces_changed_angular_is_local", || {
             let p: Vec<Vector2<f64>> = (0..12)
                 .map(|i| v2(i as f64, ((i * i) % 5) as f64))
                 .collect();
@@ -179,7 +205,7 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!((1..=4).contains(&n), "{n} pieces");
             Ok(())
         }),
-        case("comparison::pieces_changed_tiny_points", || {
+        case("table_i::pieces_changed_tiny_points", || {
             let p = six_points(1e-300);
             let n = ok(pieces_changed(
                 &Method::Angular,

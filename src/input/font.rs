@@ -1,28 +1,23 @@
-//! The letter "a" in four versions for seed 004's Figs 9–20 (the paper's typefaces are not
-//! named; spec decision A17): the outlines of DejaVu Sans, DejaVu Serif and DejaVu Serif Italic
-//! (single-storey), read from the shipped fonts with `ttf-parser`, and the hand-made
-//! polygonal "a" of [`crate::seeds::seed004::polygonal_a`] for the version made of straight
-//! segments.
+//! Glyph outlines from TrueType and OpenType fonts (feature `fonts`, read with `ttf-parser`):
+//! the closed contours of one character in em units ([`glyph`]), for seed 004's letters
+//! ([`crate::seeds::letters`]) and for a user's own letter (`splinelab fewest font.ttf
+//! --glyph g`).
 //!
-//! A TrueType outline is a closed sequence of line and quadratic Bézier segments. The
-//! interpolation points of a contour are the segments' end points (the on-curve points,
-//! including the midpoints TrueType leaves implicit between two off-curve points) — the points
-//! a draughtsman would mark on the letter; the reference outline samples every quadratic
-//! densely.
+//! A TrueType outline is a closed sequence of line and quadratic Bézier segments (an OpenType
+//! one of cubic segments). The interpolation points of a contour are the segments' end points
+//! (the on-curve points, including the midpoints TrueType leaves implicit between two
+//! off-curve points) — the points a draughtsman would mark on the letter; the reference
+//! outline samples every curved segment densely.
 
-use crate::report::error::{Error, Result};
+use crate::error::{Error, Result};
 use nalgebra::Vector2;
 
-const DEJAVU_SANS: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSans.ttf");
-const DEJAVU_SERIF: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSerif.ttf");
-const DEJAVU_SERIF_ITALIC: &[u8] = include_bytes!("../../../assets/fonts/DejaVuSerif-Italic.ttf");
-
-/// Samples per quadratic segment of the reference outline.
+/// Samples per curved segment of the reference outline.
 const QUAD_SAMPLES: usize = 24;
 
 /// One closed contour of a glyph, in em units (the em square is `[0, 1]²`).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Contour {
+pub struct GlyphContour {
     /// The on-curve points in order, without repeating the first: the interpolation points.
     pub points: Vec<Vector2<f64>>,
     /// The outline's points as the font gives them, in order, each marked on-curve (`true`)
@@ -33,79 +28,24 @@ pub struct Contour {
     pub outline: Vec<Vector2<f64>>,
 }
 
-/// A letter: its name and contours (the outer one first).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Letter {
-    /// Which version, in words.
-    pub name: &'static str,
-    /// The closed contours.
-    pub contours: Vec<Contour>,
-}
-
-/// The four versions of the letter "a": 1 DejaVu Sans, 2 DejaVu Serif, 3 the polygonal one,
-/// 4 DejaVu Serif Italic.
-///
-/// # Errors
-/// [`Error::UnknownId`] for another version; [`Error::Figure`] if a font cannot be read.
-pub fn letter_a(version: usize) -> Result<Letter> {
-    let (name, font) = match version {
-        1 => ("DejaVu Sans", DEJAVU_SANS),
-        2 => ("DejaVu Serif", DEJAVU_SERIF),
-        3 => {
-            let contours = crate::seeds::seed004::polygonal_a()
-                .into_iter()
-                .map(|points| {
-                    let mut outline = points.clone();
-                    outline.push(points[0]);
-                    let marked = points.iter().map(|&p| (p, true)).collect();
-                    Contour {
-                        points,
-                        marked,
-                        outline,
-                    }
-                })
-                .collect();
-            return Ok(Letter {
-                name: "polygonal",
-                contours,
-            });
-        }
-        4 => ("DejaVu Serif Italic", DEJAVU_SERIF_ITALIC),
-        _ => {
-            return Err(Error::UnknownId {
-                what: "letter version (1–4)",
-                id: version.to_string(),
-            })
-        }
-    };
-    Ok(Letter {
-        name,
-        contours: glyph(font, 'a').map_err(|e| Error::Figure {
-            name: format!("the letter a of {name}"),
-            message: e.to_string(),
-        })?,
-    })
-}
-
 /// The closed contours of the glyph of `ch` in a TrueType or OpenType font (the bytes of a
-/// `.ttf` or `.otf` file), in em units (module docs): a user's own letter for the seed-004
-/// study or for `splinelab fewest`.
+/// `.ttf` or `.otf` file), in em units (module docs).
 ///
 /// ```
 /// # fn main() -> Result<(), Box<dyn std::error::Error>> {
 /// let font = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/fonts/DejaVuSans.ttf"))?;
-/// let g = splinelab::report::seed004::letters::glyph(&font, 'g')?;
+/// let g = splinelab::input::font::glyph(&font, 'g')?;
 /// assert!(!g.is_empty() && g.iter().all(|c| c.outline.first() == c.outline.last()));
-/// assert!(splinelab::report::seed004::letters::glyph(&font, '\u{10FFFF}').is_err());
+/// assert!(splinelab::input::font::glyph(&font, '\u{10FFFF}').is_err());
 /// # Ok(()) }
 /// ```
 ///
 /// # Errors
-/// [`Error::Figure`] naming the character if the bytes are not a font the parser reads, the
+/// [`Error::Glyph`] naming the character if the bytes are not a font the parser reads, the
 /// font has no glyph for `ch`, or the glyph has no outline (a space).
-pub fn glyph(font: &[u8], ch: char) -> Result<Vec<Contour>> {
-    let fail = |message: &str| Error::Figure {
-        name: format!("the glyph {ch:?}"),
+pub fn glyph(font: &[u8], ch: char) -> Result<Vec<GlyphContour>> {
+    let fail = |message: &str| Error::Glyph {
+        ch,
         message: message.into(),
     };
     let face = ttf_parser::Face::parse(font, 0)
@@ -126,7 +66,7 @@ pub fn glyph(font: &[u8], ch: char) -> Result<Vec<Contour>> {
 /// Collects contours from `ttf-parser`'s outline callbacks.
 struct Outline {
     em: f64,
-    contours: Vec<Contour>,
+    contours: Vec<GlyphContour>,
 }
 
 impl Outline {
@@ -134,9 +74,9 @@ impl Outline {
         Vector2::new(f64::from(x) / self.em, f64::from(y) / self.em)
     }
 
-    fn current(&mut self) -> &mut Contour {
+    fn current(&mut self) -> &mut GlyphContour {
         if self.contours.is_empty() {
-            self.contours.push(Contour {
+            self.contours.push(GlyphContour {
                 points: Vec::new(),
                 marked: Vec::new(),
                 outline: Vec::new(),
@@ -158,7 +98,7 @@ impl Outline {
 impl ttf_parser::OutlineBuilder for Outline {
     fn move_to(&mut self, x: f32, y: f32) {
         let p = self.point(x, y);
-        self.contours.push(Contour {
+        self.contours.push(GlyphContour {
             points: vec![p],
             marked: vec![(p, true)],
             outline: vec![p],
