@@ -5,7 +5,7 @@ use nalgebra::SVector;
 use num_dual::{Dual2_64, Dual64, DualNum};
 
 /// A parametric curve `C(t) ∈ ℝᴺ` given by one formula generic over the number type (the
-/// curve counterpart of [`crate::ParametricSurface`]; kurbo's `ParamCurve`).
+/// curve counterpart of [`crate::surface::ParametricSurface`]; kurbo's `ParamCurve`).
 ///
 /// Implement [`ParametricCurve::eval`] and [`ParametricCurve::domain`]; points, checked points
 /// and exact first and second derivatives (dual numbers, no finite differences) follow.
@@ -45,7 +45,7 @@ pub trait ParametricCurve<const N: usize> {
     /// `C(t)`, checked.
     ///
     /// # Errors
-    /// [`crate::Error::NonFinite`] for a NaN or infinite `t`; [`crate::Error::OutOfDomain`] outside the
+    /// [`crate::error::Error::NonFinite`] for a NaN or infinite `t`; [`crate::error::Error::OutOfDomain`] outside the
     /// domain (both ends included).
     fn try_point(&self, t: f64) -> Result<SVector<f64, N>> {
         check_domain("curve parameter", t, self.domain())?;
@@ -61,7 +61,7 @@ pub trait ParametricCurve<const N: usize> {
     /// polyline for drawing).
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] below 2.
+    /// [`crate::error::Error::TooFewSamples`] below 2.
     fn polyline(&self, samples: usize) -> Result<Vec<SVector<f64, N>>> {
         let (a, b) = self.domain();
         crate::error::samples("polyline samples", samples)?;

@@ -24,13 +24,13 @@ impl<T> Grid<T> {
     /// Builds the grid from `f(i, j)`.
     ///
     /// # Errors
-    /// [`crate::Error::TooLarge`] if `rows · cols` overflows or exceeds
+    /// [`crate::error::Error::TooLarge`] if `rows · cols` overflows or exceeds
     /// [`crate::error::MAX_ELEMENTS`] (nothing is allocated).
     pub fn try_from_fn(
         rows: usize,
         cols: usize,
         mut f: impl FnMut(usize, usize) -> T,
-    ) -> crate::Result<Self> {
+    ) -> crate::error::Result<Self> {
         let len = crate::error::size_product("grid cells (rows × cols)", rows, cols)?;
         if len == 0 {
             // no cells: nothing to call f for, however many rows or columns

@@ -80,6 +80,7 @@ pub mod mesh;
 pub mod metrics;
 pub mod nurbs;
 mod parallel;
+pub mod param;
 pub mod prelude;
 mod printed;
 #[cfg(feature = "report")]
@@ -119,11 +120,11 @@ pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;
 pub use interp::methods::{CubicEnd, Interpolant, Method};
-pub use interp::param::Parametrization;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
 pub use mesh::Mesh;
 pub use metrics::surface::{compare, matlab_norm, CoordErrors};
 pub use nurbs::NurbsCurve;
+pub use param::Parametrization;
 pub use shapes::Shape;
 pub use study::hermite_error::{
     convergence, spline_errors, uniform_spline_errors, ConvergenceOrders, ConvergenceRow,

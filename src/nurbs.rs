@@ -16,7 +16,7 @@ use num_dual::DualNum;
 /// the perspective projection `(X/W, …)` of the B-spline with homogeneous control points
 /// `(wᵢPᵢ, wᵢ)`. With all weights 1 it is the B-spline curve on the same knots; a weight
 /// `wᵢ` acts only on `[tᵢ, t_{i+p+1})`, pulling the curve towards `Pᵢ` as it grows.
-/// Generic over the number type like [`crate::BSplineCurve`].
+/// Generic over the number type like [`crate::bspline::curve::BSplineCurve`].
 ///
 /// # Examples
 /// ```
@@ -168,7 +168,7 @@ impl<const N: usize> NurbsCurve<N> {
     }
 
     /// Evaluates at every parameter of `ts` into `out` (replacing its contents), by the same formula as
-    /// [`ParametricCurve::eval`]. As [`crate::BSplineCurve::eval_many`], at any degree: the
+    /// [`ParametricCurve::eval`]. As [`crate::bspline::curve::BSplineCurve::eval_many`], at any degree: the
     /// numerator and denominator polynomials of each span are formed once (the Bézier points
     /// of the homogeneous control points `(wᵢPᵢ, wᵢ)` by blossoming, then their power forms),
     /// then each point costs two Horner evaluations and a division.

@@ -24,12 +24,12 @@ pub const HERMITE_LIMIT: f64 = f64::MAX / 32.0;
 /// Checks every coordinate of a net is finite and at most `limit` in magnitude.
 ///
 /// # Errors
-/// [`crate::Error::NonFinite`] or [`crate::Error::CoordinateTooLarge`].
-pub(crate) fn check_net(what: &'static str, net: &Net, limit: f64) -> crate::Result<()> {
+/// [`crate::error::Error::NonFinite`] or [`crate::error::Error::CoordinateTooLarge`].
+pub(crate) fn check_net(what: &'static str, net: &Net, limit: f64) -> crate::error::Result<()> {
     for x in net.iter().flatten().flat_map(|p| p.iter()) {
         crate::error::finite(what, *x)?;
         if x.abs() > limit {
-            return Err(crate::Error::CoordinateTooLarge {
+            return Err(crate::error::Error::CoordinateTooLarge {
                 what,
                 value: *x,
                 max: limit,

@@ -231,7 +231,7 @@ fn a_circle_is_smooth_and_a_sine_has_its_inflections() {
     // a straight line has no sign at all
     let flat = splinelab::interp::linear::PiecewiseLinear::curve(
         &[V::new(0.0, 0.0), V::new(1.0, 1.0)],
-        splinelab::interp::param::Parametrization::Uniform,
+        splinelab::param::Parametrization::Uniform,
     )
     .unwrap();
     let s = smoothness(&curvature_profile(&flat, &[0.0, 1.0], 9).unwrap(), 1.0);

@@ -11,7 +11,8 @@
 
 use resvg::tiny_skia;
 use resvg::usvg;
-use splinelab::input::svg_document::{read_svg_document, DrawnPath, FillRule, LineCap, LineJoin};
+use splinelab::input::svg_document::{read_svg_document, DrawnPath, LineCap, LineJoin};
+use splinelab::input::FillRule;
 use std::path::{Path, PathBuf};
 
 /// The pixels of the longer side of a rendering.

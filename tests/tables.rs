@@ -204,7 +204,7 @@ fn notebook_html_shows_every_row_and_escapes() {
 #[cfg(feature = "report")]
 #[test]
 fn csv_is_full_precision_and_quoted() {
-    use splinelab::report::table::{Column, Frame};
+    use splinelab::report::frame::{Column, Frame};
     let x = [0.1 + 0.2, std::f64::consts::PI, -1.0e-300, 6.02214076e23];
     let df = Frame::try_new(vec![
         Column::new("x".into(), x.to_vec()),
@@ -243,7 +243,8 @@ fn csv_is_full_precision_and_quoted() {
 #[test]
 fn frames_go_to_polars_and_back() {
     use polars::prelude::{Column as PlColumn, DataFrame};
-    use splinelab::report::table::{self, Column, Frame, Values};
+    use splinelab::report::frame::{Column, Frame, Values};
+    use splinelab::report::table;
     let frame = Frame::try_new(vec![
         Column::new(
             "f".into(),

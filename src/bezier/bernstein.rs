@@ -19,12 +19,15 @@ pub fn bernstein3<D: DualNum<Primitive = f64> + Copy>(t: D) -> [D; 4] {
 /// `Bᵢⁿ = (1 − u) Bᵢⁿ⁻¹ + u Bᵢ₋₁ⁿ⁻¹` (*The NURBS Book*, A1.3), which needs no binomials.
 ///
 /// # Errors
-/// [`crate::Error::TooLarge`] if `n + 1` exceeds [`crate::error::MAX_ELEMENTS`] (the work
+/// [`crate::error::Error::TooLarge`] if `n + 1` exceeds [`crate::error::MAX_ELEMENTS`] (the work
 /// is `O(n²)`: a degree above [`MAX_BERNSTEIN_DEGREE`] is refused as well).
-pub fn bernstein_all<D: DualNum<Primitive = f64> + Copy>(n: usize, u: D) -> crate::Result<Vec<D>> {
+pub fn bernstein_all<D: DualNum<Primitive = f64> + Copy>(
+    n: usize,
+    u: D,
+) -> crate::error::Result<Vec<D>> {
     let len = crate::error::size_sum("Bernstein polynomials (degree + 1)", n, 1)?;
     if n > MAX_BERNSTEIN_DEGREE {
-        return Err(crate::Error::TooLarge {
+        return Err(crate::error::Error::TooLarge {
             what: "Bernstein degree (O(n²) work)",
             got: n,
             max: MAX_BERNSTEIN_DEGREE,
@@ -53,13 +56,13 @@ pub const MAX_BERNSTEIN_DEGREE: usize = 1 << 14;
 /// reference the de Casteljau algorithm is checked against.
 ///
 /// # Errors
-/// [`crate::Error::TooFewPoints`] for no points; the errors of [`bernstein_all`].
-pub fn bernstein_sum<P, D>(points: &[P], u: D) -> crate::Result<P>
+/// [`crate::error::Error::TooFewPoints`] for no points; the errors of [`bernstein_all`].
+pub fn bernstein_sum<P, D>(points: &[P], u: D) -> crate::error::Result<P>
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
     D: DualNum<Primitive = f64> + Copy,
 {
-    let too_few = || crate::Error::TooFewPoints {
+    let too_few = || crate::error::Error::TooFewPoints {
         what: "Bernstein sum control points",
         needed: 1,
         got: 0,

@@ -36,8 +36,8 @@ impl BezierPatch {
     /// A patch from its control net, checked.
     ///
     /// # Errors
-    /// [`crate::Error::NonFinite`] for a NaN or infinite coordinate,
-    /// [`crate::Error::CoordinateTooLarge`] beyond [`crate::tensor::NET_LIMIT`].
+    /// [`crate::error::Error::NonFinite`] for a NaN or infinite coordinate,
+    /// [`crate::error::Error::CoordinateTooLarge`] beyond [`crate::tensor::NET_LIMIT`].
     pub fn try_from_net(m: Net) -> Result<Self> {
         crate::tensor::check_net("Bézier control point", &m, crate::tensor::NET_LIMIT)?;
         Ok(Self { m })
@@ -114,7 +114,7 @@ impl BezierPatch {
     /// By the tensor-product structure this equals Codice 11 at every sample.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::Error::TooLarge`] if
+    /// [`crate::error::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::error::Error::TooLarge`] if
     /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate_de_casteljau(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
         crate::error::size_product("patch samples ns × nt", ns, nt)?;
@@ -134,7 +134,7 @@ impl BezierPatch {
     /// Tabulates by the Bernstein matrix form, basis rows computed once per grid line.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::Error::TooLarge`] if
+    /// [`crate::error::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`crate::error::Error::TooLarge`] if
     /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate_bernstein(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
         crate::error::size_product("patch samples ns × nt", ns, nt)?;

@@ -79,8 +79,8 @@ pub fn uniform_bspline4<D: DualNum<Primitive = f64> + Copy>(u: D) -> [D; 4] {
 /// Kept to check the listing against [`uniform_bspline4`]; returns `[b₀, b₁, b₂, b₃]` per `j`.
 ///
 /// # Errors
-/// [`crate::Error::TooLarge`] if `nb` exceeds [`crate::error::MAX_ELEMENTS`].
-pub fn printed_setbval(nb: usize) -> crate::Result<Vec<[f64; 4]>> {
+/// [`crate::error::Error::TooLarge`] if `nb` exceeds [`crate::error::MAX_ELEMENTS`].
+pub fn printed_setbval(nb: usize) -> crate::error::Result<Vec<[f64; 4]>> {
     crate::error::size("setbval samples (nb)", nb)?;
     Ok((0..nb)
         .map(|j| {

@@ -112,7 +112,7 @@ pub fn fit_bspline<const N: usize>(
         .collect();
     let template = BSplineCurve::with_order(initial, order)?;
     let (a, b) = template.domain();
-    let mut t: Vec<f64> = crate::interp::param::Parametrization::ChordLength
+    let mut t: Vec<f64> = crate::param::Parametrization::ChordLength
         .parameters(shape)?
         .into_iter()
         .map(|u| a + (b - a) * u)

@@ -5,7 +5,7 @@ use crate::error::{derived, finite, size, size_sum, Error, Result};
 /// A knot vector `t₀ ≤ t₁ ≤ … ≤ t_L` (the slides' *partizione estesa*, seed 001): finite,
 /// non-decreasing, at least two knots and not all equal.
 ///
-/// A knot vector alone has no degree; [`crate::BSplineBasis`] pairs it with one and checks the
+/// A knot vector alone has no degree; [`crate::bspline::basis::BSplineBasis`] pairs it with one and checks the
 /// conditions that depend on it (length, multiplicities, a non-empty domain).
 ///
 /// # Examples

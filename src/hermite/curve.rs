@@ -31,7 +31,7 @@ impl<const N: usize> HermiteCurve<N> {
     ///
     /// # Errors
     /// [`Error::TooFewPoints`] below 2 points; [`Error::CountMismatch`] unless the three
-    /// inputs have the same length; the knot rule of [`crate::Partition::try_new`]
+    /// inputs have the same length; the knot rule of [`crate::domain::Partition::try_new`]
     /// (finite, strictly increasing, gaps representable); [`Error::NonFinite`] or
     /// [`Error::CoordinateTooLarge`] for a point, or for a tangent scaled by its intervals'
     /// widths (the Hermite form uses `h Mₖ`).

@@ -39,7 +39,7 @@ impl HermitePatch {
         Self::try_from_matrix(c).expect("invalid Hermite matrix")
     }
 
-    /// A patch from a matrix already validated (the nets of a [`crate::HermiteSurface`]).
+    /// A patch from a matrix already validated (the nets of a [`crate::hermite::spline_surface::HermiteSurface`]).
     pub(crate) fn from_valid_matrix(c: Net) -> Self {
         Self { c }
     }
@@ -151,7 +151,7 @@ impl HermitePatch {
     /// row `i` ↔ `sᵢ`, with the basis rows computed once per grid line.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`Error::TooLarge`] if
+    /// [`crate::error::Error::TooFewSamples`] if `ns < 2` or `nt < 2`; [`Error::TooLarge`] if
     /// `ns · nt` exceeds [`crate::error::MAX_ELEMENTS`].
     pub fn tabulate(&self, ns: usize, nt: usize) -> Result<Grid<Vector3<f64>>> {
         crate::error::size_product("patch samples ns × nt", ns, nt)?;

@@ -4,8 +4,16 @@
 //! does not.
 
 use super::flatten::Contour;
-use super::svg_document::FillRule;
 use nalgebra::Vector2;
+
+/// How a drawn path is filled: which points its contours enclose.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FillRule {
+    /// SVG's `nonzero`.
+    NonZero,
+    /// SVG's `evenodd`.
+    EvenOdd,
+}
 
 /// The most pairs of (drawn segment, region edge) compared: beyond, the test is refused rather
 /// than run for minutes.

@@ -2,7 +2,7 @@
 //! documents (`svg_document`, feature `svg`) and fonts' glyphs (`font`, feature `fonts`), drawn
 //! as polylines within a stated distance
 //! ([`flatten`]). Every reader takes the text (reading the file is the caller's), refuses what
-//! it cannot read with [`crate::Error::Parse`] naming the line and column at fault, and returns
+//! it cannot read with [`crate::error::Error::Parse`] naming the line and column at fault, and returns
 //! nothing half-read.
 
 #[cfg(feature = "svg")]
@@ -15,11 +15,13 @@ pub mod font;
 pub mod svg_document;
 pub mod svg_path;
 
+#[cfg(feature = "svg")]
+pub use clip::FillRule;
 pub use csv::{points_from_csv, Columns};
 pub use flatten::{Contour, SvgArc};
 #[cfg(feature = "svg")]
 pub use svg_document::{
-    contours_from_svg_document, read_svg_document, DrawnPath, FillRule, Stroke, SvgOutline,
+    contours_from_svg_document, read_svg_document, DrawnPath, Stroke, SvgOutline,
 };
 pub use svg_path::contours_from_svg_path;
 

@@ -33,6 +33,7 @@
 //!   leaves every drawn point inside it changes nothing and is accepted), a document with
 //!   nothing drawn. Filters (blur, shadows) are not read: they change colours, not outlines.
 
+use super::clip::FillRule;
 use super::flatten::{Contour, Flattener};
 use super::position;
 use super::svg_path::contours_from_svg_path;
@@ -51,15 +52,6 @@ pub const ARC_APPROXIMATION: f64 = 2.73e-4;
 
 const WHAT: &str = "SVG document";
 const SVG_NS: &str = "http://www.w3.org/2000/svg";
-
-/// How a drawn path is filled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FillRule {
-    /// SVG's `nonzero`.
-    NonZero,
-    /// SVG's `evenodd`.
-    EvenOdd,
-}
 
 /// How a stroke's ends are drawn (SVG's `stroke-linecap`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

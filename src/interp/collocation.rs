@@ -10,7 +10,7 @@ use crate::error::finite_points;
 use crate::error::{finite, Error, Result};
 use crate::interp::check_sites;
 use crate::interp::cubic::{check_spline_data, EndCondition};
-use crate::interp::param::Parametrization;
+use crate::param::Parametrization;
 use nalgebra::{DMatrix, DVector, SVector};
 
 /// Which derivative a linear condition constrains.
@@ -89,38 +89,8 @@ pub fn interpolate<const N: usize>(
     values: &[SVector<f64, N>],
     conditions: &[Condition<N>],
 ) -> Result<BSplineCurve<N>> {
-    if sites.len() != values.len() {
-        return Err(Error::CountMismatch {
-            what: "values (one per site)",
-            expected: sites.len(),
-            got: values.len(),
-        });
-    }
+    check_collocation(&basis, sites, values, conditions)?;
     let size = basis.len();
-    if sites.len() + conditions.len() != size {
-        return Err(Error::CountMismatch {
-            what: "sites + conditions (one per basis function)",
-            expected: size,
-            got: sites.len() + conditions.len(),
-        });
-    }
-    crate::error::size_product("collocation matrix entries", size, size)?;
-    check_sites("collocation sites", sites)?;
-    let domain = basis.domain();
-    for &x in sites {
-        check_domain("collocation site", x, domain)?;
-    }
-    finite_points("collocation value", values)?;
-    for c in conditions {
-        for &(x, w) in &c.terms {
-            check_domain("condition site", x, domain)?;
-            finite("condition coefficient", w)?;
-        }
-        finite_points("condition value", &[c.value])?;
-    }
-    if conditions.is_empty() {
-        schoenberg_whitney(&basis, sites)?;
-    }
     let mut a = DMatrix::<f64>::zeros(size, size);
     let mut rhs: Vec<SVector<f64, N>> = Vec::with_capacity(size);
     for (i, (&x, y)) in sites.iter().zip(values).enumerate() {
@@ -206,6 +176,48 @@ pub fn interpolate<const N: usize>(
     Ok(curve)
 }
 
+/// The checks of [`interpolate`]'s input (its errors but the solve's).
+fn check_collocation<const N: usize>(
+    basis: &BSplineBasis,
+    sites: &[f64],
+    values: &[SVector<f64, N>],
+    conditions: &[Condition<N>],
+) -> Result<()> {
+    if sites.len() != values.len() {
+        return Err(Error::CountMismatch {
+            what: "values (one per site)",
+            expected: sites.len(),
+            got: values.len(),
+        });
+    }
+    let size = basis.len();
+    if sites.len() + conditions.len() != size {
+        return Err(Error::CountMismatch {
+            what: "sites + conditions (one per basis function)",
+            expected: size,
+            got: sites.len() + conditions.len(),
+        });
+    }
+    crate::error::size_product("collocation matrix entries", size, size)?;
+    check_sites("collocation sites", sites)?;
+    let domain = basis.domain();
+    for &x in sites {
+        check_domain("collocation site", x, domain)?;
+    }
+    finite_points("collocation value", values)?;
+    for c in conditions {
+        for &(x, w) in &c.terms {
+            check_domain("condition site", x, domain)?;
+            finite("condition coefficient", w)?;
+        }
+        finite_points("condition value", &[c.value])?;
+    }
+    if conditions.is_empty() {
+        schoenberg_whitney(basis, sites)?;
+    }
+    Ok(())
+}
+
 /// The most an `Ok` collocation curve misses its data, evaluated on the curve itself at the
 /// sites, relative to `max |yᵢ|` (when every value is 0, to the data scale of the
 /// equilibrated system, `max |bᵢ|`: derivative conditions in value units): `10⁻⁸`. A backward-stable solve of an ill-conditioned but solvable system (knots `10⁻⁸`
@@ -255,7 +267,7 @@ pub fn schoenberg_whitney(basis: &BSplineBasis, sites: &[f64]) -> Result<()> {
 }
 
 /// The interpolating cubic spline by the B-spline route, independent of the tridiagonal one
-/// of [`crate::CubicSpline`]: knots `x₀` (×4), `x₁ … x_{n−1}`, `x_n` (×4) — the slides'
+/// of [`crate::interp::cubic::CubicSpline`]: knots `x₀` (×4), `x₁ … x_{n−1}`, `x_n` (×4) — the slides'
 /// "nodes of the spline coincide with the interpolation points", leaving two degrees of
 /// freedom — and the two end conditions as extra rows (`s′` or `s″` at the ends from the
 /// exact basis derivatives).

@@ -4,8 +4,8 @@
 use crate::bspline::curve::SPARSE_BLOCK;
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
-use crate::interp::param::Parametrization;
 use crate::interp::IntervalCursor;
+use crate::param::Parametrization;
 use crate::tridiagonal::{solve, solve_twisted, Band, Row};
 use nalgebra::{SVector, Vector1};
 use num_dual::{Dual2_64, DualNum};

@@ -3,7 +3,7 @@
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
 use crate::interp::check_sites;
-use crate::interp::param::Parametrization;
+use crate::param::Parametrization;
 use nalgebra::SVector;
 use num_dual::DualNum;
 

@@ -14,7 +14,7 @@ use crate::interp::angular::AngularSpline;
 use crate::interp::cardinal::CardinalSpline;
 use crate::interp::cubic::{CubicSpline, EndCondition};
 use crate::interp::linear::PiecewiseLinear;
-use crate::interp::param::Parametrization;
+use crate::param::Parametrization;
 use nalgebra::Vector2;
 use num_dual::DualNum;
 

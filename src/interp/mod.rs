@@ -1,5 +1,6 @@
 //! Interpolation: polynomial (power basis, Lagrange), piecewise linear, cubic splines with
-//! four end conditions, B-spline collocation, and parametrizations (seeds 001 and 004).
+//! four end conditions, B-spline collocation (seeds 001 and 004); the parameters of the points
+//! are [`crate::param`].
 
 pub mod angular;
 pub mod cardinal;
@@ -8,7 +9,6 @@ pub mod collocation;
 pub mod cubic;
 pub mod linear;
 pub mod methods;
-pub mod param;
 pub mod polynomial;
 
 use crate::error::{Error, Result};

@@ -1,7 +1,7 @@
 //! Figures from data: the public drawing API behind every figure of the CLI and the notebooks.
 //!
 //! Everything here takes the user's objects — any [`SurfaceDerivatives`] (a closure in
-//! [`crate::FnSurface`], a patch, a spline surface) on a [`Rect`], any [`ParametricCurve`] in
+//! [`crate::surface::FnSurface`], a patch, a spline surface) on a [`Rect`], any [`ParametricCurve`] in
 //! the plane or in space, a basis, a study's rows, a series of numbers — and returns a
 //! [`Figure`], which draws on any plotters backend, writes anti-aliased PNG and SVG, and shows
 //! itself inline in a notebook. Defaults (camera, colours, labels, samples) are chosen so a
@@ -146,7 +146,7 @@ impl Plot3d {
     /// on top.
     ///
     /// # Errors
-    /// As [`crate::HermitePatch::tabulate`].
+    /// As [`crate::hermite::patch::HermitePatch::tabulate`].
     pub fn patches(
         mut self,
         spline: &HermiteSurface,
@@ -552,7 +552,10 @@ pub fn choice_panel(
     let closed = target.is_closed();
     let curve = choice.method.curve(&choice.points, closed)?;
     let drawn = choice.method.prepared(&choice.points, closed);
-    let polygon = matches!(choice.method, crate::Method::BSpline { .. });
+    let polygon = matches!(
+        choice.method,
+        crate::interp::methods::Method::BSpline { .. }
+    );
     let mut panel = interpolation(title, target.reference(), &drawn, polygon, &curve)?;
     panel.x_label = format!(
         "{} pts, error {:.2} %{}",
@@ -591,7 +594,7 @@ pub fn choice(
 /// A comparison of interpolation methods over one shape: one [`interpolation`] panel per
 /// `(method, points, closed)`, titled with the method and its point count as the paper counts
 /// them, `layout = (rows, cols)`, one legend for all. Points through which the method has no
-/// smooth curve ([`crate::Error::NoSmoothPiece`]: an Angular spline through collinear points
+/// smooth curve ([`crate::error::Error::NoSmoothPiece`]: an Angular spline through collinear points
 /// beside a turn, say) get a panel of the shape and the points with the refusal written under
 /// it: that is the answer for those points.
 ///
@@ -601,7 +604,7 @@ pub fn choice(
 pub fn methods(
     title: impl Into<String>,
     reference: &[Vector2<f64>],
-    cases: &[(crate::Method, Vec<Vector2<f64>>, bool)],
+    cases: &[(crate::interp::methods::Method, Vec<Vector2<f64>>, bool)],
     layout: (usize, usize),
 ) -> Result<Figure> {
     let panels = cases
@@ -615,10 +618,10 @@ pub fn methods(
                     title,
                     reference,
                     &drawn,
-                    matches!(method, crate::Method::BSpline { .. }),
+                    matches!(method, crate::interp::methods::Method::BSpline { .. }),
                     &curve,
                 ),
-                Err(e @ crate::Error::NoSmoothPiece { .. }) => {
+                Err(e @ crate::error::Error::NoSmoothPiece { .. }) => {
                     let mut panel = Panel::new(format!("{title}: refused"), "", "")
                         .equal()
                         .with(
@@ -761,12 +764,12 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
 /// down to the point `P(u)`.
 ///
 /// # Errors
-/// As [`crate::de_casteljau`] (no points, non-finite coordinates).
+/// As [`crate::bezier::de_casteljau::de_casteljau`] (no points, non-finite coordinates).
 pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<Figure> {
     let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
         .into_iter()
         .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
-        .collect::<crate::Result<_>>()?;
+        .collect::<crate::error::Result<_>>()?;
     let curve = xy(&curve);
     // the layout whose panels show the shape largest at equal axes (panel sizes estimated
     // from the figure size less the title, legend, axis labels and margins)

@@ -1,18 +1,18 @@
-//! The report layer's error: the mathematics' [`crate::Error`] plus what only files, ids,
+//! The report layer's error: the mathematics' [`crate::error::Error`] plus what only files, ids,
 //! figures and tables can get wrong.
 
 use std::path::PathBuf;
 
 /// Everything that can go wrong when building, drawing or writing an output.
 ///
-/// `Debug` prints the `Display` message, as [`crate::Error`] does, so a notebook cell or an
+/// `Debug` prints the `Display` message, as [`crate::error::Error`] does, so a notebook cell or an
 /// `.expect(…)` shows words, not fields.
 #[derive(Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
     /// An error of the mathematics behind the output.
     #[error(transparent)]
-    Core(#[from] crate::Error),
+    Core(#[from] crate::error::Error),
     /// Reading or writing a file failed.
     #[error("{path}: {message}")]
     Io {

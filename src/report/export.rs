@@ -118,7 +118,7 @@ pub fn ply(mesh: &Mesh, encoding: PlyEncoding) -> Vec<u8> {
 /// and three vertices as `float`s and a zero attribute.
 ///
 /// # Errors
-/// [`crate::Error::Overflow`] (as [`crate::report::Error::Core`]) for a coordinate beyond
+/// [`crate::error::Error::Overflow`] (as [`crate::report::Error::Core`]) for a coordinate beyond
 /// `f32::MAX`, which a `float` cannot hold.
 pub fn stl(mesh: &Mesh) -> Result<Vec<u8>> {
     let mut header = [b' '; 80];
@@ -133,7 +133,7 @@ pub fn stl(mesh: &Mesh) -> Result<Vec<u8>> {
         if w.iter().all(|x| x.is_finite()) {
             Ok([w.x, w.y, w.z])
         } else {
-            Err(crate::Error::Overflow {
+            Err(crate::error::Error::Overflow {
                 what: "STL coordinate (a 32-bit float)",
                 value: v.amax(),
             }
@@ -203,7 +203,7 @@ pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
 /// points with a margin, and `y` pointing up as in the curve's coordinates.
 ///
 /// # Errors
-/// [`crate::Error::Overflow`] if the `viewBox` (the extent with its margin) is not finite:
+/// [`crate::error::Error::Overflow`] if the `viewBox` (the extent with its margin) is not finite:
 /// control points so far apart that their distance overflows.
 pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> Result<String> {
     let points = segments.iter().flatten();
@@ -225,7 +225,7 @@ pub fn svg_document(segments: &[CubicSegment<2>], stroke_width: f64) -> Result<S
         .iter()
         .find(|v| !v.is_finite())
     {
-        return Err(crate::Error::Overflow {
+        return Err(crate::error::Error::Overflow {
             what: "the SVG document's viewBox (the curve's extent with its margin)",
             value: bad,
         }

@@ -279,11 +279,16 @@ fn surfaces() -> Result<Vec<CorpusEntry>> {
     let at = (0.6, 0.7);
     out.push(surface_entry(
         "torus",
-        &crate::Torus::new(2.0, 1.0),
+        &crate::surface::Torus::new(2.0, 1.0),
         at,
         unit,
     )?);
-    out.push(surface_entry("sphere", &crate::Sphere::new(1.5), at, unit)?);
+    out.push(surface_entry(
+        "sphere",
+        &crate::surface::Sphere::new(1.5),
+        at,
+        unit,
+    )?);
     macro_rules! surfaces {
         ($($name:literal => |$s:ident, $t:ident| $body:expr,)*) => {
             $({
@@ -323,8 +328,13 @@ fn surfaces() -> Result<Vec<CorpusEntry>> {
         "trig-mix" => |s, t| Vector3::new(s.sin() * t.cos(), s.cos() * t.sin(), (s + t).sin()),
         "rational" => |s, t| Vector3::new(s / (t * t + 1.0), t / (s * s + 1.0), s * t / (s + t)),
     }
-    let torus = crate::Torus::new(2.0, 1.0);
-    let spline = crate::HermiteSurface::uniform(&torus, &crate::Rect::unit(), 4, 4)?;
+    let torus = crate::surface::Torus::new(2.0, 1.0);
+    let spline = crate::hermite::spline_surface::HermiteSurface::uniform(
+        &torus,
+        &crate::domain::Rect::unit(),
+        4,
+        4,
+    )?;
     out.push(surface_entry(
         "hermite-spline-of-torus",
         &spline,
@@ -342,7 +352,7 @@ fn curves() -> Result<Vec<CorpusEntry>> {
         .map(|i| Vector2::new(i as f64, ((i * 7) % 5) as f64))
         .collect();
     for (order, t) in [(3, 2.5), (4, 1.3), (6, 2.7)] {
-        let c = crate::BSplineCurve::with_order(zigzag.clone(), order)?;
+        let c = crate::bspline::curve::BSplineCurve::with_order(zigzag.clone(), order)?;
         let (a, b) = c.domain();
         let at = a + (b - a) * t / 3.0;
         out.push(curve_entry(
@@ -361,8 +371,8 @@ fn curves() -> Result<Vec<CorpusEntry>> {
     let mut knots = vec![0.0; 6];
     knots.extend([1.21, 1.5]);
     knots.extend(vec![2.0; 6]);
-    let deg5 = crate::BSplineCurve::new(
-        crate::BSplineBasis::new(crate::KnotVector::new(knots), 5),
+    let deg5 = crate::bspline::curve::BSplineCurve::new(
+        crate::bspline::basis::BSplineBasis::new(crate::bspline::knots::KnotVector::new(knots), 5),
         (0..8)
             .map(|i| Vector2::new(i as f64 * 0.3, ((i * 3) % 4) as f64 * 0.7))
             .collect(),
@@ -378,20 +388,24 @@ fn curves() -> Result<Vec<CorpusEntry>> {
         .iter()
         .map(|&(x, y)| Vector2::new(x, y))
         .collect();
-    let bezier = crate::BSplineCurve::with_order(control.clone(), control.len())?;
+    let bezier = crate::bspline::curve::BSplineCurve::with_order(control.clone(), control.len())?;
     out.push(curve_entry("bezier-quartic", &bezier, 0.4, false)?);
-    let circle9 = crate::NurbsCurve::circle9(Vector2::new(0.0, 0.0), 1.0)?;
+    let circle9 = crate::nurbs::NurbsCurve::circle9(Vector2::new(0.0, 0.0), 1.0)?;
     out.push(curve_entry("nurbs-circle9", &circle9, 0.1, true)?);
-    let circle7 = crate::NurbsCurve::circle7(Vector2::new(1.0, 2.0), 2.0)?;
+    let circle7 = crate::nurbs::NurbsCurve::circle7(Vector2::new(1.0, 2.0), 2.0)?;
     out.push(curve_entry("nurbs-circle7", &circle7, 0.4, true)?);
     let x = [0.0, 0.7, 1.5, 2.0, 3.1];
     let y: Vec<SVector<f64, 2>> = x
         .iter()
         .map(|&v: &f64| SVector::<f64, 2>::new(v.sin(), v.cos() * 0.5))
         .collect();
-    let cubic = crate::CubicSpline::try_new(&x, &y, crate::EndCondition::Natural)?;
+    let cubic = crate::interp::cubic::CubicSpline::try_new(
+        &x,
+        &y,
+        crate::interp::cubic::EndCondition::Natural,
+    )?;
     out.push(curve_entry("cubic-spline-natural", &cubic, 1.7, true)?);
-    let hermite = crate::HermiteCurve::try_new(
+    let hermite = crate::hermite::curve::HermiteCurve::try_new(
         vec![0.0, 1.0, 2.5],
         vec![
             Vector2::new(0.0, 0.0),
@@ -405,22 +419,22 @@ fn curves() -> Result<Vec<CorpusEntry>> {
         ],
     )?;
     out.push(curve_entry("hermite-curve", &hermite, 1.6, true)?);
-    let cardinal = crate::CardinalSpline::try_new(control.clone(), 0.5)?;
+    let cardinal = crate::interp::cardinal::CardinalSpline::try_new(control.clone(), 0.5)?;
     out.push(curve_entry("cardinal", &cardinal, 1.4, true)?);
-    let angular = crate::AngularSpline::try_new(control.clone())?;
+    let angular = crate::interp::angular::AngularSpline::try_new(control.clone())?;
     out.push(curve_entry("angular", &angular, 0.3, true)?);
     out.push(curve_entry("angular-second-piece", &angular, 1.7, true)?);
-    let linear = crate::PiecewiseLinear::try_new(&x, &y)?;
+    let linear = crate::interp::linear::PiecewiseLinear::try_new(&x, &y)?;
     out.push(curve_entry("piecewise-linear", &linear, 1.1, true)?);
     out.push(curve_entry(
         "ellipse",
-        &crate::Shape::Ellipse { ratio: 0.4 },
+        &crate::shapes::Shape::Ellipse { ratio: 0.4 },
         1.0,
         false,
     )?);
     out.push(curve_entry(
         "hyperbola",
-        &crate::Shape::Hyperbola { b: 2.0 },
+        &crate::shapes::Shape::Hyperbola { b: 2.0 },
         0.5,
         false,
     )?);
@@ -432,7 +446,7 @@ fn bases() -> Result<Vec<CorpusEntry>> {
     let mut out = Vec::new();
     let h = symbolic::hermite_basis_formulas()?;
     out.push(functions_entry("hermite-basis", "H", &h, (0.0, 1.0), |t| {
-        crate::hermite_basis(t).to_vec()
+        crate::hermite::basis::hermite_basis(t).to_vec()
     }));
     for n in [3, 5] {
         let b = symbolic::bernstein_formulas(n)?;
@@ -441,11 +455,13 @@ fn bases() -> Result<Vec<CorpusEntry>> {
             "B",
             &b,
             (0.0, 1.0),
-            move |t| crate::bernstein_all(n, t).unwrap_or_default(),
+            move |t| crate::bezier::bernstein::bernstein_all(n, t).unwrap_or_default(),
         ));
     }
-    let basis = crate::BSplineBasis::new(
-        crate::KnotVector::new(vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.2, 2.0, 2.0, 2.0, 2.0]),
+    let basis = crate::bspline::basis::BSplineBasis::new(
+        crate::bspline::knots::KnotVector::new(vec![
+            0.0, 0.0, 0.0, 0.0, 0.5, 1.2, 2.0, 2.0, 2.0, 2.0,
+        ]),
         3,
     );
     let bf = symbolic::bspline_basis_formulas(&basis, 0.8)?;
@@ -466,8 +482,9 @@ fn bases() -> Result<Vec<CorpusEntry>> {
 
 /// The Hermite patch of the torus as `H(s)ᵀ C H(t)`.
 fn torus_patch() -> Result<CorpusEntry> {
-    let torus = crate::Torus::new(2.0, 1.0);
-    let patch = crate::HermitePatch::from_surface(&torus, &crate::Rect::unit());
+    let torus = crate::surface::Torus::new(2.0, 1.0);
+    let patch =
+        crate::hermite::patch::HermitePatch::from_surface(&torus, &crate::domain::Rect::unit());
     let pf = symbolic::patch_formulas(&patch)?;
     let formulas =
         pf.x.iter()

@@ -11,6 +11,17 @@
 
 use std::fmt;
 
+/// A frame from columns, a [`FrameError`] as [`crate::report::Error::Table`] naming the table.
+///
+/// # Errors
+/// [`crate::report::Error::Table`] if the columns differ in length or repeat a name.
+pub fn frame(name: &str, columns: Vec<Column>) -> crate::report::error::Result<Frame> {
+    Frame::try_new(columns).map_err(|e| crate::report::error::Error::Table {
+        name: name.to_string(),
+        message: e.to_string(),
+    })
+}
+
 /// One column's values: one vector per kind, `None` for a missing cell.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Values {

@@ -13,8 +13,8 @@ use crate::blending::functions::Blending;
 use crate::interp::choice::Start;
 use crate::interp::cubic::EndCondition;
 use crate::interp::methods::{CubicEnd, Method};
-use crate::interp::param::Parametrization;
 use crate::interp::polynomial::NodeFamily;
+use crate::param::Parametrization;
 use crate::study::hermite_error::PatchEvaluation;
 use crate::study::table_i::Verdict;
 use std::borrow::Cow;
@@ -126,7 +126,7 @@ mod tests {
     use super::Legend;
     use crate::interp::cubic::EndCondition;
     use crate::interp::methods::{CubicEnd, Method};
-    use crate::interp::param::Parametrization;
+    use crate::param::Parametrization;
     use crate::study::hermite_error::PatchEvaluation;
 
     /// The texts of an enum's variants differ (a legend that named two choices alike would

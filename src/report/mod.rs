@@ -34,6 +34,7 @@ pub mod frame;
 pub mod heatmap;
 pub mod legend;
 pub mod notebook;
+mod output;
 pub mod plot2d;
 pub mod record;
 pub mod render3d;
@@ -51,79 +52,10 @@ pub use error::{Error, Result};
 pub use figure::Figure;
 pub use files::remove_temporaries_on_interrupt;
 pub use legend::Legend;
+pub use output::{Build, Output};
 pub use table::Table;
 
 use std::path::{Path, PathBuf};
-
-/// How an output is computed.
-#[derive(Debug, Clone, Copy)]
-pub enum Build {
-    /// A table, written as CSV and Markdown under `tables/`.
-    Table(fn() -> Result<Table>),
-    /// A figure, written as PNG and SVG under `figures/`.
-    Figure(fn() -> Result<Figure>),
-}
-
-/// One output of the reports: an id (the file stem and `--only` argument), the seed it comes
-/// from, a one-line description and how to build it.
-#[derive(Debug, Clone, Copy)]
-pub struct Output {
-    /// Id used by `--only` and as the file stem.
-    pub id: &'static str,
-    /// One-line description for `--list`.
-    pub description: &'static str,
-    /// How it is computed.
-    pub build: Build,
-}
-
-impl Output {
-    /// A table output.
-    pub const fn table(
-        id: &'static str,
-        description: &'static str,
-        build: fn() -> Result<Table>,
-    ) -> Self {
-        Self {
-            id,
-            description,
-            build: Build::Table(build),
-        }
-    }
-
-    /// A figure output.
-    pub const fn figure(
-        id: &'static str,
-        description: &'static str,
-        build: fn() -> Result<Figure>,
-    ) -> Self {
-        Self {
-            id,
-            description,
-            build: Build::Figure(build),
-        }
-    }
-
-    /// Whether it is a figure.
-    pub fn is_figure(&self) -> bool {
-        matches!(self.build, Build::Figure(_))
-    }
-
-    /// Writes the output's files into `dir` (`tables/<id>.csv|md` or
-    /// `figures/<id>.png|svg`); returns their paths.
-    ///
-    /// # Errors
-    /// [`Error::Io`] if a file cannot be written; errors of the computation or drawing.
-    pub fn write(&self, dir: &Path) -> Result<Vec<PathBuf>> {
-        match self.build {
-            Build::Table(f) => {
-                let mut table = f()?;
-                table.id = self.id.to_string();
-                table.write(&dir.join("tables"))
-            }
-            Build::Figure(f) => f()?.save(&dir.join("figures"), self.id),
-        }
-    }
-}
 
 /// Every output, seed by seed, in generation order.
 pub fn outputs() -> impl Iterator<Item = &'static Output> {

@@ -28,7 +28,7 @@ pub fn sampled(a: f64, b: f64, f: impl Fn(f64) -> (f64, f64)) -> Vec<(f64, f64)>
 ///
 /// # Errors
 /// As [`ParametricCurve::polyline`].
-pub fn trace<C: ParametricCurve<2> + ?Sized>(c: &C) -> crate::Result<Vec<(f64, f64)>> {
+pub fn trace<C: ParametricCurve<2> + ?Sized>(c: &C) -> crate::error::Result<Vec<(f64, f64)>> {
     Ok(xy(&c.polyline(SAMPLES)?))
 }
 
@@ -101,7 +101,7 @@ impl Series {
         label: impl Into<String>,
         curve: &C,
         color: RGBColor,
-    ) -> crate::Result<Self> {
+    ) -> crate::error::Result<Self> {
         Ok(Self::line(label, trace(curve)?, color))
     }
 

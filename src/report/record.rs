@@ -39,7 +39,7 @@ pub trait Record: Sized {
 /// # Errors
 /// [`crate::report::Error::Table`] if two fields share a column name.
 pub fn frame_of<R: Record>(id: &str, rows: &[R]) -> Result<Frame> {
-    crate::report::table::frame(id, R::columns(rows))
+    crate::report::frame::frame(id, R::columns(rows))
 }
 
 /// Declares a row struct and its [`Record`] implementation: each field with the name of its

@@ -5,9 +5,9 @@
 
 use crate::domain::Rect;
 use crate::metrics::surface::CoordErrors;
-use crate::report::error::{io_err, Error, Result};
+use crate::report::error::{io_err, Result};
 use crate::report::files::write_atomic;
-pub use crate::report::frame::{Cell, Column, Frame, FrameError, Values};
+use crate::report::frame::{frame, Cell, Column, Frame};
 use crate::report::notebook::escape;
 use crate::study::hermite_error::{ConvergenceOrders, ConvergenceRow};
 use crate::surface::{partials_on_grid, SurfaceDerivatives};
@@ -30,17 +30,6 @@ pub struct Table {
 
 /// The names of the three coordinates.
 pub const COORDS: [&str; 3] = ["x", "y", "z"];
-
-/// A frame from columns, a [`FrameError`] as [`Error::Table`] naming the table.
-///
-/// # Errors
-/// [`Error::Table`] if the columns differ in length or repeat a name.
-pub fn frame(name: &str, columns: Vec<Column>) -> Result<Frame> {
-    Frame::try_new(columns).map_err(|e| Error::Table {
-        name: name.to_string(),
-        message: e.to_string(),
-    })
-}
 
 impl Table {
     /// A table without notes.
@@ -95,7 +84,7 @@ impl Table {
     /// temporary file renamed into place; returns the paths.
     ///
     /// # Errors
-    /// [`Error::Io`] if the folder or a file cannot be written.
+    /// [`crate::report::Error::Io`] if the folder or a file cannot be written.
     pub fn write(&self, dir: &Path) -> Result<Vec<PathBuf>> {
         std::fs::create_dir_all(dir).map_err(io_err(dir))?;
         let csv_path = dir.join(format!("{}.csv", self.id));
@@ -108,13 +97,15 @@ impl Table {
     /// The data as a polars `DataFrame` (feature `polars`), for polars' queries.
     ///
     /// # Errors
-    /// [`Error::Table`] if polars refuses the columns.
+    /// [`crate::report::Error::Table`] if polars refuses the columns.
     #[cfg(feature = "polars")]
     pub fn to_polars(&self) -> Result<polars::prelude::DataFrame> {
-        self.df.to_polars().map_err(|e| Error::Table {
-            name: self.id.clone(),
-            message: e.to_string(),
-        })
+        self.df
+            .to_polars()
+            .map_err(|e| crate::report::Error::Table {
+                name: self.id.clone(),
+                message: e.to_string(),
+            })
     }
 
     /// Shows the table in a notebook as HTML (title, every row, notes); falls back to
@@ -251,7 +242,7 @@ pub fn csv(df: &Frame) -> Result<Vec<u8>> {
 /// Writes any frame to `path` as CSV (through a temporary file renamed into place).
 ///
 /// # Errors
-/// [`Error::Io`] if the file cannot be written.
+/// [`crate::report::Error::Io`] if the file cannot be written.
 pub fn write_csv(df: &Frame, path: &Path) -> Result<()> {
     write_atomic(path, &csv(df)?)
 }
@@ -320,7 +311,7 @@ crate::record! {
 /// (mean of per-patch matrix 2-norms), max-abs and RMS.
 ///
 /// # Errors
-/// [`Error::Table`] only if the columns came out ragged (an internal error).
+/// [`crate::report::Error::Table`] only if the columns came out ragged (an internal error).
 pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> Result<Table> {
     let rows: Vec<CoordErrorRow> = cases
         .iter()
@@ -346,7 +337,7 @@ pub fn coord_errors(id: &str, title: &str, cases: &[(String, CoordErrors)]) -> R
 /// max-abs, RMS and the report's measure with the observed order against the previous row.
 ///
 /// # Errors
-/// [`Error::Table`] only if the columns came out ragged (an internal error).
+/// [`crate::report::Error::Table`] only if the columns came out ragged (an internal error).
 pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Table> {
     let (mut n_col, mut h_col, mut coord) = (vec![], vec![], vec![]);
     // value and order (None on the first row, which has no previous row) of each measure
@@ -395,7 +386,7 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
 /// that derivative for scale. C¹ interpolation makes both jumps zero up to rounding.
 ///
 /// # Errors
-/// [`crate::Error::TooFewSamples`] if `samples < 2`; [`Error::Table`] only if the
+/// [`crate::error::Error::TooFewSamples`] if `samples < 2`; [`crate::report::Error::Table`] only if the
 /// columns came out ragged (an internal error).
 pub fn seam_continuity(
     spline: &crate::hermite::spline_surface::HermiteSurface,
@@ -467,10 +458,10 @@ type Partials2 = (Vector3<f64>, Vector3<f64>);
 
 /// An error study of `surface` on `rect` for several patch counts `(n, m)`: each case's
 /// uniform `n × m` Hermite spline, `prec × prec` samples per patch, measured by the report's
-/// norm, max-abs and RMS ([`crate::uniform_spline_errors`] with the Hermite matrix form).
+/// norm, max-abs and RMS ([`crate::study::hermite_error::uniform_spline_errors`] with the Hermite matrix form).
 ///
 /// # Errors
-/// As [`crate::uniform_spline_errors`].
+/// As [`crate::study::hermite_error::uniform_spline_errors`].
 pub fn error_study<S: SurfaceDerivatives + Sync + ?Sized>(
     surface: &S,
     rect: &Rect,
@@ -490,7 +481,7 @@ pub fn error_study<S: SurfaceDerivatives + Sync + ?Sized>(
             )?;
             Ok((format!("{n}×{m}"), e))
         })
-        .collect::<crate::Result<Vec<_>>>()?;
+        .collect::<crate::error::Result<Vec<_>>>()?;
     coord_errors(
         "error-study",
         &format!("Error of the n × m Hermite spline, {prec}×{prec} samples per patch"),

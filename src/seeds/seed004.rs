@@ -172,8 +172,8 @@ pub const CORNER_OFFSET: f64 = 0.1;
 /// them, at most `count` points in all (its printed 6 exactly).
 ///
 /// # Errors
-/// [`crate::Error::TooLarge`] for a count beyond [`crate::error::MAX_ELEMENTS`] (nothing is
-/// allocated); [`crate::Error::NotPositive`] or [`crate::Error::OutOfDomain`] for an invalid
+/// [`crate::error::Error::TooLarge`] for a count beyond [`crate::error::MAX_ELEMENTS`] (nothing is
+/// allocated); [`crate::error::Error::NotPositive`] or [`crate::error::Error::OutOfDomain`] for an invalid
 /// shape; the errors of the B-spline fit.
 pub fn paper_points(shape: &Shape, method: &Method, count: usize) -> Result<PointSet> {
     crate::error::size("paper points", count)?;

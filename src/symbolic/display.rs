@@ -3,7 +3,7 @@
 //! which browsers render without a script (so a notebook's HTML copy shows it too), with the
 //! LaTeX beside it for front ends that prefer it.
 
-use super::Formula;
+use super::print::{escape, Formula};
 use nalgebra::Matrix4;
 
 /// One cell of mathematics, in LaTeX and in presentation MathML.
@@ -223,13 +223,6 @@ impl Formula {
             self.latex()
         );
     }
-}
-
-/// Text for HTML and MathML: `&`, `<`, `>` escaped.
-pub(crate) fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 /// Text for `\text{…}`: LaTeX's special characters escaped.

@@ -1,6 +1,8 @@
 //! The expression type: a `Copy` handle into a per-thread arena of hash-consed nodes, carrying
-//! its value at the trace point (so `re()`, comparisons and `abs` follow the numeric path).
+//! its value at the trace point (so `re()`, comparisons and `abs` follow the numeric path);
+//! and where a traced formula holds, as the arena records it (below, *Claims*).
 
+use crate::branch::Observer;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
@@ -42,7 +44,7 @@ impl Hasher for FastHasher {
 pub(crate) type FastMap<K, V> = HashMap<K, V, BuildHasherDefault<FastHasher>>;
 
 /// The most nodes one trace may create ([`crate::symbolic::Trace::formula`] returns
-/// [`crate::Error::TooLarge`] beyond).
+/// [`crate::error::Error::TooLarge`] beyond).
 pub const MAX_NODES: usize = 1 << 20;
 
 /// A function of one argument.
@@ -240,9 +242,9 @@ pub(crate) struct Arena {
     /// Values read through `re()` without a condition (node and value).
     pub(crate) reads: Vec<(u32, f64)>,
     /// How a read through `re()` is recorded now.
-    pub(crate) read_mode: super::claim::ReadMode,
+    pub(crate) read_mode: ReadMode,
     /// The modes that choices and quiet reads in progress replaced (innermost last).
-    pub(crate) read_modes: Vec<super::claim::ReadMode>,
+    pub(crate) read_modes: Vec<ReadMode>,
 }
 
 thread_local! {
@@ -292,12 +294,12 @@ impl Arena {
         self.branches.clear();
         self.claims.clear();
         self.reads.clear();
-        self.read_mode = super::claim::ReadMode::default();
+        self.read_mode = ReadMode::default();
         self.read_modes.clear();
         self.overflowed = false;
         self.poisoned = false;
         self.live = true;
-        crate::branch::observe(Some(&super::claim::OBSERVER));
+        crate::branch::observe(Some(&OBSERVER));
         // 2⁶⁴ traces cannot be started: the identity never wraps
         self.generation = NEXT_TRACE.fetch_add(1, Ordering::Relaxed);
         self.nodes.push(Node::TooLarge);
@@ -541,4 +543,75 @@ impl Expr {
     pub(crate) fn opaque(what: &'static str, a: Expr, value: f64) -> Expr {
         Expr::make(Node::Opaque(what, a.id, value), value, &[a])
     }
+}
+
+// Claims. Where a traced formula holds, as the traced code recorded it: the trace's side of
+// [`crate::branch`]. The core tells the running trace when it picks a piece by a value
+// ([`crate::branch::choose`]) or reads one quietly; every other read of a value (`re()` in
+// the code, or in num-dual's own functions, such as `sph_j0` near 0) is recorded as a read
+// without a condition: the formula is then claimed at the trace point only.
+
+/// The hooks a running trace installs ([`crate::branch::observe`]).
+pub(crate) static OBSERVER: Observer = Observer {
+    begin_choice: || enter(ReadMode::Piece(None)),
+    end_choice: |condition| {
+        ARENA.with(|a| {
+            let mut a = a.borrow_mut();
+            if let ReadMode::Piece(Some(id)) = a.read_mode {
+                a.claims.push((id, condition));
+            }
+            a.read_mode = a.read_modes.pop().unwrap_or_default();
+        })
+    },
+    begin_quiet: || enter(ReadMode::Quiet),
+    end_quiet: || {
+        ARENA.with(|a| {
+            let mut a = a.borrow_mut();
+            a.read_mode = a.read_modes.pop().unwrap_or_default();
+        })
+    },
+};
+
+/// Enters `mode`, keeping the one it replaces for the matching end.
+fn enter(mode: ReadMode) {
+    ARENA.with(|a| {
+        let mut a = a.borrow_mut();
+        let before = std::mem::replace(&mut a.read_mode, mode);
+        a.read_modes.push(before);
+    })
+}
+
+/// How an expression's value read through `re()` is recorded.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub(crate) enum ReadMode {
+    /// A read without a condition (the formula is claimed at the trace point only).
+    #[default]
+    Unrecorded,
+    /// Inside [`crate::branch::choose`]: the node read is kept for its condition.
+    Piece(Option<u32>),
+    /// Inside [`crate::branch::read_quietly`]: not recorded.
+    Quiet,
+}
+
+/// Records that the value of node `id` (of trace `generation`) was read through `re()`.
+pub(crate) fn note_read(id: u32, generation: u64, value: f64) {
+    ARENA.with(|a| {
+        let mut a = a.borrow_mut();
+        if a.generation != generation || !a.live {
+            return;
+        }
+        if matches!(a.nodes.get(id as usize), Some(Node::Num(_)) | None) {
+            // a constant's value chooses nothing
+            return;
+        }
+        match a.read_mode {
+            ReadMode::Piece(_) => a.read_mode = ReadMode::Piece(Some(id)),
+            ReadMode::Quiet => {}
+            ReadMode::Unrecorded => {
+                if !a.reads.iter().any(|&(i, _)| i == id) {
+                    a.reads.push((id, value));
+                }
+            }
+        }
+    })
 }

@@ -343,24 +343,26 @@ pub fn curve_formulas_local<const N: usize, C: ParametricCurve<N> + ?Sized>(
 }
 
 /// The cubic Hermite basis `H₀ … H₃` as formulas in `t`, traced from
-/// [`crate::hermite_basis`]: `1 - 3*t^2 + 2*t^3`, `t - 2*t^2 + t^3`, `t^3 - t^2`,
+/// [`crate::hermite::basis::hermite_basis`]: `1 - 3*t^2 + 2*t^3`, `t - 2*t^2 + t^3`, `t^3 - t^2`,
 /// `3*t^2 - 2*t^3`, as the report prints them (seed 000 §1).
 ///
 /// # Errors
 /// None in practice (the trace is small); typed as [`trace`].
 pub fn hermite_basis_formulas() -> Result<[Formula; 4]> {
-    let traced = trace([("t", 0.5)], |[t]| crate::hermite_basis(t).to_vec())?;
+    let traced = trace([("t", 0.5)], |[t]| {
+        crate::hermite::basis::hermite_basis(t).to_vec()
+    })?;
     let f = traced.formulas;
     Ok([f[0].clone(), f[1].clone(), f[2].clone(), f[3].clone()])
 }
 
 /// The Bernstein polynomials `B₀ⁿ … Bₙⁿ` as formulas in `t`, traced from
-/// [`crate::bernstein_all`]: for `n = 3`, `(1 - t)^3`, `3*t*(1 - t)^2`, `3*t^2*(1 - t)`,
+/// [`crate::bezier::bernstein::bernstein_all`]: for `n = 3`, `(1 - t)^3`, `3*t*(1 - t)^2`, `3*t^2*(1 - t)`,
 /// `t^3` (seed 000 §4).
 ///
 /// # Errors
 /// [`Error::TooLarge`] above degree 64 (formulas of that size are not for reading); the
-/// errors of [`crate::bernstein_all`].
+/// errors of [`crate::bezier::bernstein::bernstein_all`].
 pub fn bernstein_formulas(n: usize) -> Result<Vec<Formula>> {
     const MAX_DEGREE: usize = 64;
     if n > MAX_DEGREE {
@@ -376,7 +378,7 @@ pub fn bernstein_formulas(n: usize) -> Result<Vec<Formula>> {
         got: 0,
     });
     let traced = trace([("t", 0.5)], |[t]| {
-        out = crate::bernstein_all(n, t);
+        out = crate::bezier::bernstein::bernstein_all(n, t);
         out.clone().unwrap_or_default()
     })?;
     out?;
@@ -457,7 +459,7 @@ pub fn bspline_basis_formulas(basis: &BSplineBasis, t: f64) -> Result<BasisFormu
 /// and the polynomial it multiplies out to.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PatchFormulas {
-    /// `H(s)`, traced from [`crate::hermite_basis`].
+    /// `H(s)`, traced from [`crate::hermite::basis::hermite_basis`].
     pub h_s: [Formula; 4],
     /// `H(t)`.
     pub h_t: [Formula; 4],
@@ -513,8 +515,8 @@ fn subscript_digit(i: usize) -> char {
 /// As [`trace`].
 pub fn patch_formulas(patch: &HermitePatch) -> Result<PatchFormulas> {
     let traced = trace([("s", 0.5), ("t", 0.5)], |[s, t]| {
-        let mut out = crate::hermite_basis(s).to_vec();
-        out.extend(crate::hermite_basis(t));
+        let mut out = crate::hermite::basis::hermite_basis(s).to_vec();
+        out.extend(crate::hermite::basis::hermite_basis(t));
         out.extend(patch.eval(s, t).iter().copied());
         out
     })?;

@@ -14,8 +14,8 @@
 //! # Ok::<(), splinelab::Error>(())
 //! ```
 //!
-//! **The API.** [`surface_formulas`] (any [`crate::ParametricSurface`]: `X`, `X_s`, `X_t`,
-//! `X_st`), [`curve_formulas`] (any [`crate::ParametricCurve`]: `C`, `C′`, `C″` on the piece of
+//! **The API.** [`surface_formulas`] (any [`crate::surface::ParametricSurface`]: `X`, `X_s`, `X_t`,
+//! `X_st`), [`curve_formulas`] (any [`crate::curve::ParametricCurve`]: `C`, `C′`, `C″` on the piece of
 //! `t`), [`hermite_basis_formulas`], [`bernstein_formulas`], [`bspline_basis_formulas`] (on a
 //! knot span), [`patch_formulas`] (`H(s)ᵀ C H(t)`), and [`trace`] for any generic code of
 //! one's own; [`crate::surface!`] writes a user surface once for numbers and formulas. Each
@@ -25,7 +25,7 @@
 //! nodes (equal subexpressions are one node) and its value at the trace point, so `re()`,
 //! comparisons and `abs` follow the numeric path. A [`Trace`] owns the arena: it is emptied
 //! when a trace starts and freed when it ends, so a long session does not grow; a trace holds
-//! at most [`MAX_NODES`] nodes ([`crate::Error::TooLarge`] beyond). One trace per thread at a
+//! at most [`MAX_NODES`] nodes ([`crate::error::Error::TooLarge`] beyond). One trace per thread at a
 //! time.
 //!
 //! **Trust.** Nothing is printed that was not checked.
@@ -33,10 +33,10 @@
 //!   CppAD's tape ids), every handle names it, and handles and traces cannot leave their
 //!   thread (`Expr` is neither `Send` nor `Sync`). A handle of an ended trace is refused; an
 //!   operation given one (`old + y`) poisons the running trace, and every formula of it is
-//!   then [`crate::Error::Degenerate`].
+//!   then [`crate::error::Error::Degenerate`].
 //! - *Capture check*: each formula, simplified, is evaluated at the trace point and compared
 //!   with the value the traced code computed, within 8 ε times the sum of both computations'
-//!   first-order rounding bounds ([`crate::Error::FormulaCheck`] beyond). Multiplied-out and
+//!   first-order rounding bounds ([`crate::error::Error::FormulaCheck`] beyond). Multiplied-out and
 //!   cleaned forms are checked again; a cleaned form that fails is not used.
 //! - *Where it holds*: see **Branches**.
 //!
@@ -97,17 +97,16 @@
 //! **Limits.** [`MAX_NODES`] per trace; a formula written out as a tree at most
 //! [`MAX_FORMULA_SIZE`] nodes and [`MAX_FORMULA_DEPTH`] deep (so printing and evaluation
 //! terminate and cannot overflow the stack); multiplying out at most [`MAX_EXPANDED_TERMS`]
-//! terms. Beyond each: [`crate::Error::TooLarge`], never a panic.
+//! terms. Beyond each: [`crate::error::Error::TooLarge`], never a panic.
 //!
 //! **No formula:** `%` gives an opaque node carrying its numeric value (printed `rem[…]`);
 //! parsing (`Num::from_str_radix`) is an error.
 
 mod canon;
-pub(crate) mod claim;
 mod display;
 // HTML/MathML escaping, also the report layer's (one function for both)
 #[cfg(feature = "report")]
-pub(crate) use display::escape;
+pub(crate) use print::escape;
 mod expr;
 mod formulas;
 mod ops;

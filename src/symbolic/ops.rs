@@ -178,7 +178,7 @@ impl DualStruct for Expr {
     /// whose code read a value other than through a recorded piece holds at the trace point
     /// only).
     fn re(&self) -> f64 {
-        super::claim::note_read(self.id, self.generation, self.value);
+        super::expr::note_read(self.id, self.generation, self.value);
         self.value
     }
     fn from_inner(inner: &Expr) -> Expr {

@@ -7,7 +7,6 @@
 use super::canon::{
     apply_bound, atan2_bound, pow_bound, Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE,
 };
-use super::display::escape;
 use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
 pub use crate::printed::number;
@@ -1014,11 +1013,18 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
     })
 }
 
+/// Text for HTML and MathML: `&`, `<`, `>` escaped.
+pub(crate) fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::{Node, Trace};
     use super::ARENA;
-    use crate::Error;
+    use crate::error::Error;
 
     /// The capture check catches a formula that differs from what was traced: here a node
     /// corrupted after the trace computed its value.

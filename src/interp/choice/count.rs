@@ -4,9 +4,11 @@
 //! galloped and bisected), the minimality of the answer, and the counts of each family
 //! (distinct points, repeats of a closed curve, guides).
 
-use super::layout::{candidates, Candidate};
-use super::local::{compass, equidistribute, finish, tune_parameter};
+use super::counts::{counted_of, distinct_of, fewest_counted, min_distinct};
+use super::known::{better, checked_known};
+use super::polish::{compass, equidistribute, finish, tune_parameter};
 use super::prune::{pruned_starts, Seed};
+use super::starts::{candidates, Candidate};
 use super::{
     bound, bspline, polygon, Attempt, Choice, Family, Minimality, Scratch, Search, SearchOptions,
     Start, Target, MAX_EVALUATIONS, MAX_RANDOM_STARTS, POLISHED_STARTS,
@@ -478,86 +480,8 @@ fn full_search(
     Ok((attempt, best, evaluations))
 }
 
-/// Within tolerance first, then the lower error.
-pub(super) fn better(c: &Choice, best: Option<&Choice>) -> bool {
-    match best {
-        None => true,
-        Some(b) => {
-            (c.within_tolerance, -c.measure.distances.hausdorff())
-                > (b.within_tolerance, -b.measure.distances.hausdorff())
-        }
-    }
-}
-
-/// The known configuration of `options`, measured again on `target` (its fields are public,
-/// so nothing it claims is trusted): `None` unless it builds, meets the tolerance and counts
-/// at least the family's fewest and at most `max_points`.
-///
-/// # Errors
-/// The errors of [`Target::measure`] for a known configuration that does not build (NaN
-/// points, say).
-pub(super) fn checked_known(target: &Target, options: &SearchOptions) -> Result<Option<Choice>> {
-    let Some(k) = &options.known else {
-        return Ok(None);
-    };
-    let measure = target.measure(&k.method, &k.points)?;
-    let within = measure.distances.hausdorff() <= target.tolerance();
-    let counted = measure.counted;
-    let min = Family::of(&k.method).map_or(0, |f| fewest_counted(f, target.is_closed()));
-    Ok(
-        (within && counted >= min && counted <= options.max_points).then(|| Choice {
-            method: k.method,
-            points: k.points.clone(),
-            within_tolerance: true,
-            measure,
-            evaluations: k.evaluations,
-            start: Start::Known,
-        }),
-    )
-}
-
 /// The most distinct points the search tries on `target`: four per reference vertex, at
 /// least 64.
 pub fn max_distinct_for(target: &Target) -> usize {
     target.reference().len().saturating_mul(4).max(64)
-}
-
-/// The fewest distinct points of a family: 3 closed (Angular and cardinal: 3 + 3 repeats),
-/// 2 + 2 guides open for the guided families, 3 for the cubic, 2 for the polygon (a segment).
-pub(super) fn min_distinct(family: Family, closed: bool) -> usize {
-    match (family, closed) {
-        (_, true) => 3,
-        (Family::Angular | Family::Cardinal, false) => 4,
-        (Family::Linear, false) => 2,
-        _ => 3,
-    }
-}
-
-/// Distinct points behind a counted number (the repeats of a closed curve taken off).
-pub(super) fn distinct_of(family: Family, closed: bool, counted: usize) -> usize {
-    counted.saturating_sub(repeats(family, closed))
-}
-
-/// The fewest points a family counts: the B-spline fit's fewest vertices (4 closed, the
-/// closing one counted once; 2 open), else [`min_distinct`] with the closed curve's repeats.
-pub(super) fn fewest_counted(family: Family, closed: bool) -> usize {
-    match (family, closed) {
-        (Family::BSpline, true) => 4,
-        (Family::BSpline, false) => 2,
-        _ => counted_of(family, closed, min_distinct(family, closed)),
-    }
-}
-
-/// The points counted for `distinct` distinct points (repeats of a closed curve added).
-pub(super) fn counted_of(family: Family, closed: bool, distinct: usize) -> usize {
-    distinct.saturating_add(repeats(family, closed))
-}
-
-/// The repeats a closed curve of the family counts: Angular and cardinal 3, others 1.
-fn repeats(family: Family, closed: bool) -> usize {
-    match (family, closed) {
-        (_, false) => 0,
-        (Family::Angular | Family::Cardinal, true) => 3,
-        (_, true) => 1,
-    }
 }

@@ -12,7 +12,8 @@
 //! sampled on each piece, and the reference; a configuration is accepted when it is at most
 //! the tolerance with [`FINAL_SAMPLES`] samples per piece.
 //!
-//! **Search, for one count `n`** ([`Attempt`]):
+//! **Search, for one count `n`** ([`Attempt`]; each step in its file: `starts.rs`,
+//! `prune.rs`, `polish.rs`):
 //! 1. *Starts*, deterministic and tagged with their family ([`Start`]): points at equal steps
 //!    of a weight — arc length `s / L`; arc length mixed with the absolute turning,
 //!    `W(s) = (1 − β) s / L + β Θ(s) / Θ(L)` with `β ∈ {½, ¾}` (`Θ(s)` is `∫|κ| ds`, a corner
@@ -85,15 +86,17 @@
 pub mod bound;
 mod bspline;
 mod count;
-mod layout;
-mod local;
+mod counts;
+mod known;
+mod polish;
 pub mod polygon;
 mod prune;
+mod starts;
 pub mod symmetry;
 mod target;
 
 pub use count::{fewest_points, max_distinct_for, search};
-pub use layout::{A_STEP, GUIDE_REACH};
+pub use starts::{A_STEP, GUIDE_REACH};
 pub use target::{simplified, Target, COARSE_ABOVE, COARSE_FRACTION, CORNER_TURN, MAX_RUN};
 
 use crate::interp::methods::Method;

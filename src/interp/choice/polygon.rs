@@ -108,11 +108,11 @@ type V = Vector2<f64>;
 /// [`Error::Degenerate`] if no polygon can be measured on the target.
 pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search> {
     let closed = target.is_closed();
-    let min_distinct = super::count::min_distinct(super::Family::Linear, closed);
+    let min_distinct = super::counts::min_distinct(super::Family::Linear, closed);
     let tolerance = target.tolerance();
     let found = fewest_within(target, tolerance, min_distinct, true)?;
     if found.choice.measure.counted <= options.max_points && found.choice.within_tolerance {
-        let known = super::count::checked_known(target, options)?;
+        let known = super::known::checked_known(target, options)?;
         if let Some(k) = known.filter(|k| k.measure.counted < found.choice.measure.counted) {
             // a given polygon the side-by-side measure does not allow, but the table's does
             return Ok(Search {
@@ -684,30 +684,60 @@ impl Along {
     }
 }
 
-impl Shortcuts {
-    /// The shortcuts among the candidates of `items` within `eps`; `None` if the forward
-    /// sweeps visit more than [`MAX_SHORTCUTS`] points.
-    fn new(items: &[Item], eps: f64, closed: bool) -> Option<Shortcuts> {
-        // in units that bring the coordinates within [−1, 1] (a power of two: exact), so
-        // that no square overflows
+/// The outline as the cone sweeps read it: the items in units that bring the coordinates
+/// within `[−1, 1]`, the candidates' positions, and per item the steps to the reference
+/// vertices around it.
+struct Sweeps<'a> {
+    items: &'a [Item],
+    /// The items' points, scaled.
+    p: Vec<V>,
+    /// The tolerance, scaled.
+    eps: f64,
+    closed: bool,
+    /// The candidates' positions among the items.
+    at: Vec<usize>,
+    /// Candidates among the items before each position, unrolled once for closed outlines.
+    cum: Vec<usize>,
+    /// Steps from each item to the next reference vertex after it (`usize::MAX`: none; an
+    /// open outline's end).
+    next: Vec<usize>,
+    /// Steps from each item back to the reference vertex before it (`usize::MAX`: none).
+    prev: Vec<usize>,
+}
+
+/// The forward sweeps: the sides along the first segment implied (an offset `t0`), then bit
+/// `t − t0 − 1` of row `i` says candidate `i + t` is reachable forward.
+struct Forward {
+    bits: Vec<u64>,
+    /// Per candidate: its first word, `t0` and the last offset swept.
+    rows: Vec<(usize, usize, usize)>,
+    /// The largest forward offset of a side from each candidate.
+    reach: Vec<u32>,
+}
+
+impl Forward {
+    /// Whether candidate `i + t` is reachable forward from candidate `i`.
+    fn has(&self, i: usize, t: usize) -> bool {
+        let (start, t0, len) = self.rows[i];
+        t > t0 && t <= len && self.bits[start + (t - t0 - 1) / 64] >> ((t - t0 - 1) % 64) & 1 == 1
+    }
+}
+
+impl<'a> Sweeps<'a> {
+    fn of(items: &'a [Item], eps: f64, closed: bool) -> Sweeps<'a> {
+        // a power of two: exact, and no square overflows
         let largest = items.iter().map(|i| i.p.amax()).fold(0.0, f64::max);
         let unit = if largest > 0.0 {
             2f64.powi(-(largest.log2().ceil() as i32).clamp(-1000, 1000))
         } else {
             1.0
         };
-        let eps = eps * unit;
-        let p: Vec<V> = items.iter().map(|i| i.p * unit).collect();
-        let at: Vec<usize> = (0..items.len()).filter(|&k| items[k].candidate).collect();
-        let (n, m) = (at.len(), items.len());
+        let m = items.len();
         let wrap = |k: usize| if k >= m { k - m } else { k };
-        // candidates among the items before each position, unrolled once for closed outlines
         let mut cum = vec![0usize; 2 * m + 1];
         for x in 0..2 * m {
             cum[x + 1] = cum[x] + usize::from(items[wrap(x)].candidate);
         }
-        // steps from each item to the next reference vertex after it and back to the one
-        // before it (`usize::MAX`: none; an open outline's ends)
         let mut next = vec![usize::MAX; m];
         let mut prev = vec![usize::MAX; m];
         let mut seen = None;
@@ -729,42 +759,68 @@ impl Shortcuts {
                 seen = Some(x);
             }
         }
-        // forward sweeps: the sides along the first segment implied (an offset `t0`), then
-        // bit t − t0 − 1 of row i says candidate i + t is reachable forward
+        Sweeps {
+            items,
+            p: items.iter().map(|i| i.p * unit).collect(),
+            eps: eps * unit,
+            closed,
+            at: (0..m).filter(|&k| items[k].candidate).collect(),
+            cum,
+            next,
+            prev,
+        }
+    }
+
+    fn wrap(&self, k: usize) -> usize {
+        let m = self.items.len();
+        if k >= m {
+            k - m
+        } else {
+            k
+        }
+    }
+
+    /// Every candidate's forward sweep; `None` beyond [`MAX_SHORTCUTS`] points visited.
+    fn forward(&self) -> Option<Forward> {
+        let (items, p, eps) = (self.items, &self.p, self.eps);
+        let (n, m) = (self.at.len(), items.len());
         let mut bits: Vec<u64> = Vec::new();
         let mut rows: Vec<(usize, usize, usize)> = Vec::with_capacity(n);
         let mut reach = vec![0u32; n];
         let mut visited = 0usize;
-        for (i, &a) in at.iter().enumerate() {
+        for (i, &a) in self.at.iter().enumerate() {
             let start = bits.len();
-            let steps = if closed { m - 1 } else { m - 1 - a };
+            let steps = if self.closed { m - 1 } else { m - 1 - a };
             let mut cone = Cone::FULL;
             // along the segment to its end vertex: no vertex between, every side allowed
-            let jump = next[a].min(steps);
-            let t0 = cum[a + jump + 1] - cum[a + 1];
+            let jump = self.next[a].min(steps);
+            let t0 = self.cum[a + jump + 1] - self.cum[a + 1];
             reach[i] = t0 as u32;
             if jump >= 1 {
-                let e = wrap(a + jump);
+                let e = self.wrap(a + jump);
                 cone.pass(p[e] - p[a], items[e].vertex, eps);
             }
             let mut t = t0;
             let mut step = jump + 1;
             while step <= steps && !cone.empty {
-                let k = wrap(a + step);
+                let k = self.wrap(a + step);
                 // a vertex narrows the cone; the points along the segment after it do not,
                 // and those in the cone are one interval of them
                 let (run, (lo, hi)) = if items[k].vertex {
                     let inside = cone.pass(p[k] - p[a], true, eps);
                     (1, (0, usize::from(inside)))
                 } else {
-                    let run = next[k].min(steps + 1 - step);
-                    (run, cone.interval(run, |x| p[wrap(a + step + x)] - p[a]))
+                    let run = self.next[k].min(steps + 1 - step);
+                    (
+                        run,
+                        cone.interval(run, |x| p[self.wrap(a + step + x)] - p[a]),
+                    )
                 };
                 let (first, last) = (t - t0, t - t0 + usize::from(items[k].candidate) * run);
                 bits.resize(start + last.div_ceil(64), 0);
                 for bit in first + lo..(first + hi).min(last) {
                     // a side of zero length only while the cone is full (as `Cone::pass`)
-                    if cone.full || p[wrap(a + step + bit - first)] != p[a] {
+                    if cone.full || p[self.wrap(a + step + bit - first)] != p[a] {
                         bits[start + bit / 64] |= 1 << (bit % 64);
                     }
                 }
@@ -777,20 +833,25 @@ impl Shortcuts {
             }
             rows.push((start, t0, t));
         }
-        let forward = |i: usize, t: usize| {
-            let (start, t0, len) = rows[i];
-            t > t0 && t <= len && bits[start + (t - t0 - 1) / 64] >> ((t - t0 - 1) % 64) & 1 == 1
-        };
-        // backward sweeps, each side kept when both reach it (past the segment's sides)
+        Some(Forward { bits, rows, reach })
+    }
+
+    /// Every candidate's backward sweep, each side kept when the forward sweep reaches it too
+    /// (past the segment's sides): the offsets of the sides into each candidate, listed by
+    /// `first`, and how each joins its segment ([`Along`]); `forward.reach` raised to the
+    /// sides kept.
+    fn backward(&self, forward: &mut Forward) -> (Vec<usize>, Vec<u32>, Vec<Along>) {
+        let (items, p, eps) = (self.items, &self.p, self.eps);
+        let (n, m) = (self.at.len(), items.len());
         let mut first = Vec::with_capacity(n + 1);
         let mut preds: Vec<u32> = Vec::new();
         let mut along = Vec::with_capacity(n);
-        for (j, &b) in at.iter().enumerate() {
+        for (j, &b) in self.at.iter().enumerate() {
             first.push(preds.len());
-            let steps = if closed { m - 1 } else { b };
-            let jump = prev[b].min(steps);
+            let steps = if self.closed { m - 1 } else { b };
+            let jump = self.prev[b].min(steps);
             let unrolled = b + m;
-            let t0 = cum[unrolled] - cum[unrolled - jump];
+            let t0 = self.cum[unrolled] - self.cum[unrolled - jump];
             along.push(match (t0, items[b].vertex) {
                 (0, _) => Along::None,
                 (_, true) => Along::End,
@@ -798,31 +859,31 @@ impl Shortcuts {
             });
             let mut cone = Cone::FULL;
             if jump >= 1 {
-                let e = wrap(unrolled - jump);
+                let e = self.wrap(unrolled - jump);
                 cone.pass(p[e] - p[b], items[e].vertex, eps);
             }
             let mut t = t0;
             let mut step = jump + 1;
             while step <= steps && !cone.empty {
-                let k = wrap(unrolled - step);
+                let k = self.wrap(unrolled - step);
                 let (run, (lo, hi)) = if items[k].vertex {
                     let inside = cone.pass(p[k] - p[b], true, eps);
                     (1, (0, usize::from(inside)))
                 } else {
-                    let run = prev[k].min(steps + 1 - step);
+                    let run = self.prev[k].min(steps + 1 - step);
                     (
                         run,
-                        cone.interval(run, |x| p[wrap(unrolled - step - x)] - p[b]),
+                        cone.interval(run, |x| p[self.wrap(unrolled - step - x)] - p[b]),
                     )
                 };
                 if items[k].candidate {
                     for x in lo..hi {
                         let t = t + x + 1;
                         let i = if j >= t { j - t } else { j + n - t };
-                        let moved = cone.full || p[wrap(unrolled - step - x)] != p[b];
-                        if moved && forward(i, t) {
+                        let moved = cone.full || p[self.wrap(unrolled - step - x)] != p[b];
+                        if moved && forward.has(i, t) {
                             preds.push(t as u32);
-                            reach[i] = reach[i].max(t as u32);
+                            forward.reach[i] = forward.reach[i].max(t as u32);
                         }
                     }
                     t += run;
@@ -831,13 +892,24 @@ impl Shortcuts {
             }
         }
         first.push(preds.len());
+        (first, preds, along)
+    }
+}
+
+impl Shortcuts {
+    /// The shortcuts among the candidates of `items` within `eps`; `None` if the forward
+    /// sweeps visit more than [`MAX_SHORTCUTS`] points.
+    fn new(items: &[Item], eps: f64, closed: bool) -> Option<Shortcuts> {
+        let outline = Sweeps::of(items, eps, closed);
+        let mut forward = outline.forward()?;
+        let (first, preds, along) = outline.backward(&mut forward);
         Some(Shortcuts {
-            n,
+            n: outline.at.len(),
             closed,
             first,
             preds,
             along,
-            reach,
+            reach: forward.reach,
         })
     }
 

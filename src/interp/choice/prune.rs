@@ -2,8 +2,8 @@
 //! [`super`], step 1, *pruned*): its points taken off one at a time, each time the one whose
 //! removal raises the error least.
 
-use super::layout::{Candidate, Layout};
-use super::local::error_of;
+use super::polish::error_of;
+use super::starts::{Candidate, Layout};
 use super::target::Target;
 use super::{Choice, Family, Scratch, Start};
 use crate::interp::methods::{CubicEnd, Method};

@@ -12,8 +12,21 @@
 //! reflection across the perpendicular bisector of the ends (the parabola, the hyperbola) or
 //! the half-turn about their midpoint (the sinusoid).
 
-use super::target::Target;
 use nalgebra::Vector2;
+
+/// What the symmetry search reads of a shape ([`super::Target`] is one): its arc length, its
+/// size (the larger bounding-box side), whether it is closed, and its point at an arc length
+/// (taken modulo the length when closed).
+pub trait ArcShape {
+    /// The arc length `L`.
+    fn length(&self) -> f64;
+    /// The larger side of the bounding box.
+    fn size(&self) -> f64;
+    /// Whether the shape is a closed curve.
+    fn is_closed(&self) -> bool;
+    /// The point at arc length `s`.
+    fn point(&self, s: f64) -> Vector2<f64>;
+}
 
 /// Candidate anchors of a closed target.
 pub const CANDIDATES: usize = 256;
@@ -81,7 +94,7 @@ pub struct Mirror {
 
 /// The largest displacement, as a fraction of the size, of the mirror image of the
 /// target's points from the points it should map to.
-fn score(target: &Target, mirror: &Mirror) -> f64 {
+fn score<S: ArcShape + ?Sized>(target: &S, mirror: &Mirror) -> f64 {
     let len = target.length();
     let size = target.size();
     let mut worst: f64 = 0.0;
@@ -102,7 +115,7 @@ fn score(target: &Target, mirror: &Mirror) -> f64 {
 }
 
 /// The closed target's mirror anchored at `s0`, if the axis points differ.
-fn closed_mirror(target: &Target, s0: f64) -> Option<Mirror> {
+fn closed_mirror<S: ArcShape + ?Sized>(target: &S, s0: f64) -> Option<Mirror> {
     let len = target.length();
     let isometry = Isometry::through(target.point(s0), target.point(s0 + 0.5 * len))?;
     Some(Mirror {
@@ -112,7 +125,7 @@ fn closed_mirror(target: &Target, s0: f64) -> Option<Mirror> {
 }
 
 /// The mirror symmetries of `target` (module docs), best first.
-pub fn mirrors(target: &Target) -> Vec<Mirror> {
+pub fn mirrors<S: ArcShape + ?Sized>(target: &S) -> Vec<Mirror> {
     let len = target.length();
     if !(len.is_finite() && target.size() > 0.0 && target.size().is_finite()) {
         return Vec::new();

@@ -1,7 +1,7 @@
 //! The shape a search draws: a dense reference, its tolerance, the arc coordinate along it,
 //! the weights whose equal steps place points, and the mirror symmetries of the shape.
 
-use super::symmetry::{mirrors, Mirror};
+use super::symmetry::{mirrors, ArcShape, Mirror};
 use super::{Measure, Scratch, FINAL_SAMPLES, SEARCH_SAMPLES};
 use crate::curve::ParametricCurve;
 use crate::error::{Error, Result};
@@ -647,4 +647,22 @@ pub(super) enum Weight {
     Turning(f64),
     /// The exact shape's own parameter (arc length on a polyline).
     Parameter,
+}
+
+impl ArcShape for Target {
+    fn length(&self) -> f64 {
+        Target::length(self)
+    }
+
+    fn size(&self) -> f64 {
+        Target::size(self)
+    }
+
+    fn is_closed(&self) -> bool {
+        Target::is_closed(self)
+    }
+
+    fn point(&self, s: f64) -> Vector2<f64> {
+        Target::point(self, s)
+    }
 }

@@ -5,8 +5,8 @@ use crate::bezier::patch::BezierPatch;
 use crate::domain::Rect;
 use crate::hermite::patch::HermitePatch;
 use crate::report::error::Result;
+use crate::report::frame::Frame;
 use crate::report::record::frame_of;
-use crate::report::table::Frame;
 use crate::report::table::{self, Table, COORDS};
 use crate::seeds::seed000::{agrees_to_printed, PrintedRow, T3, T6};
 use crate::study::hermite_error::{

@@ -283,7 +283,10 @@ pub fn runge_errors() -> Result<Table> {
                     .map(|&t| (power.eval(t) - lagrange.eval(t)).abs())
                     .fold(0.0, f64::max),
             ),
-            Err(crate::Error::IllConditioned { .. } | crate::Error::SingularSystem { .. }) => None,
+            Err(
+                crate::error::Error::IllConditioned { .. }
+                | crate::error::Error::SingularSystem { .. },
+            ) => None,
             Err(e) => return Err(e.into()),
         };
         rows.push(RungeErrorRow {

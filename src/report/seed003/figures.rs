@@ -82,7 +82,7 @@ pub fn four_way() -> Result<Figure> {
         let casteljau: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
             .into_iter()
             .map(|u| de_casteljau_recursive(&points, u))
-            .collect::<crate::Result<_>>()?;
+            .collect::<crate::error::Result<_>>()?;
         let bezier: Vec<Vector2<f64>> = linspace(0.0, 1.0, 60)
             .into_iter()
             .filter_map(|u| bernstein_sum(&points, u).ok())

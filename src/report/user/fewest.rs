@@ -60,7 +60,7 @@ crate::record! {
 ///
 /// # Errors
 /// [`crate::report::Error::Table`] if the frame cannot be built (an internal error).
-pub fn outline_frame(id: &str, outline: &[Contour]) -> Result<crate::report::table::Frame> {
+pub fn outline_frame(id: &str, outline: &[Contour]) -> Result<crate::report::frame::Frame> {
     let rows: Vec<OutlinePoint> = outline
         .iter()
         .enumerate()

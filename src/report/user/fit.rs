@@ -59,7 +59,7 @@ impl Fit {
     /// # Errors
     /// The errors of [`Method::curve`] (too few points, coincident neighbours, a bad
     /// parameter, non-finite coordinates, points through which the method has no curve) as
-    /// [`crate::report::Error::Core`]; [`crate::Error::NonFinite`] if the curve is not finite
+    /// [`crate::report::Error::Core`]; [`crate::error::Error::NonFinite`] if the curve is not finite
     /// at a break between its pieces.
     pub fn try_new(points: &[Vector2<f64>], method: Method, closed: bool) -> Result<Fit> {
         let curve = method.curve(points, closed)?;
@@ -88,12 +88,12 @@ impl Fit {
     /// `(t, point)` at `per_piece` equal steps of every piece and at the curve's end.
     ///
     /// # Errors
-    /// [`crate::Error::TooFewSamples`] below 2 samples a piece; [`crate::Error::TooLarge`] if the
-    /// samples exceed [`crate::error::MAX_ELEMENTS`]; [`crate::Error::NonFinite`] where the
+    /// [`crate::error::Error::TooFewSamples`] below 2 samples a piece; [`crate::error::Error::TooLarge`] if the
+    /// samples exceed [`crate::error::MAX_ELEMENTS`]; [`crate::error::Error::NonFinite`] where the
     /// curve is not finite.
     pub fn samples(&self, per_piece: usize) -> Result<Vec<(f64, Vector2<f64>)>> {
         if per_piece < 2 {
-            return Err(crate::Error::TooFewSamples {
+            return Err(crate::error::Error::TooFewSamples {
                 what: "samples per piece",
                 got: per_piece,
             }
@@ -105,7 +105,7 @@ impl Fit {
             .checked_mul(per_piece)
             .and_then(|n| n.checked_add(1))
             .filter(|&n| n <= crate::error::MAX_ELEMENTS)
-            .ok_or(crate::Error::TooLarge {
+            .ok_or(crate::error::Error::TooLarge {
                 what: "curve samples",
                 got: pieces.saturating_mul(per_piece),
                 max: crate::error::MAX_ELEMENTS,
@@ -251,7 +251,7 @@ impl Fit {
     ///
     /// # Errors
     /// As [`curve_formulas_local`] (a formula beyond the size limits);
-    /// [`crate::Error::FormulaCheck`] where a formula is not the curve on its range.
+    /// [`crate::error::Error::FormulaCheck`] where a formula is not the curve on its range.
     pub fn formulas(&self, style: FormulaStyle) -> Result<String> {
         let ranges = self.formula_ranges();
         let pieces = ranges.len();
@@ -324,7 +324,7 @@ impl Fit {
             for (c, formula) in point.iter().enumerate() {
                 let value = formula.eval(&[t - origin]);
                 if (value - curve[c]).abs() > allowed || value.is_nan() {
-                    return Err(crate::Error::FormulaCheck {
+                    return Err(crate::error::Error::FormulaCheck {
                         formula: format!(
                             "{} = {} on t in [{}, {}], at t = {}",
                             ["x(u)", "y(u)"][c.min(1)],

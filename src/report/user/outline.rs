@@ -48,7 +48,7 @@ impl FileKind {
     /// The kind of `path` by its extension (any case).
     ///
     /// # Errors
-    /// [`crate::Error::Parse`] for an extension none of the readers takes.
+    /// [`crate::error::Error::Parse`] for an extension none of the readers takes.
     pub fn of(path: &Path) -> Result<FileKind> {
         let ext = path
             .extension()
@@ -60,7 +60,7 @@ impl FileKind {
             Some("path") => FileKind::PathData,
             Some("ttf" | "otf") => FileKind::Font,
             _ => {
-                return Err(crate::Error::Parse {
+                return Err(crate::error::Error::Parse {
                     what: "input file name",
                     line: 1,
                     column: 1,
@@ -115,14 +115,14 @@ pub fn read_bytes_within(path: &Path, max: u64) -> Result<Vec<u8>> {
 /// The text of `path` (UTF-8).
 ///
 /// # Errors
-/// As [`read_bytes`]; [`crate::Error::Parse`] at the first byte that is not UTF-8.
+/// As [`read_bytes`]; [`crate::error::Error::Parse`] at the first byte that is not UTF-8.
 pub fn read_text(path: &Path) -> Result<String> {
     let bytes = read_bytes(path)?;
     String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         let text = String::from_utf8_lossy(valid);
         let (line, column) = crate::input::position(&text, text.len());
-        crate::Error::Parse {
+        crate::error::Error::Parse {
             what: "input file",
             line,
             column,
@@ -150,7 +150,7 @@ pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> 
 /// As [`FileKind::of`], [`read_text`], [`points_from_csv`],
 /// [`read_svg_document`], [`contours_from_svg_path`] and
 /// [`crate::input::font::glyph`];
-/// [`crate::Error::Parse`] for a font without `options.glyph`.
+/// [`crate::error::Error::Parse`] for a font without `options.glyph`.
 pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> {
     let kind = FileKind::of(path)?;
     match kind {
@@ -178,7 +178,7 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
             let tolerance = match options.flatten {
                 Some(t) if t.is_finite() && t > coarse.arcs => t - coarse.arcs,
                 Some(t) if t > 0.0 && t.is_finite() => {
-                    return Err(crate::Error::Parse {
+                    return Err(crate::error::Error::Parse {
                         what: "SVG flattening tolerance",
                         line: 1,
                         column: 1,
@@ -195,7 +195,7 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
             Ok(read_svg_document(&text, tolerance)?.into_contours())
         }
         FileKind::Font => {
-            let ch = options.glyph.ok_or(crate::Error::Parse {
+            let ch = options.glyph.ok_or(crate::error::Error::Parse {
                 what: "font outline",
                 line: 1,
                 column: 1,

@@ -68,11 +68,11 @@ impl PartitionSpec {
 }
 
 impl FromStr for PartitionSpec {
-    type Err = crate::Error;
+    type Err = crate::error::Error;
 
     /// `NxM` (equal patches; `N` along `s`, `M` along `t`).
-    fn from_str(s: &str) -> crate::Result<Self> {
-        let bad = |message: String| crate::Error::Parse {
+    fn from_str(s: &str) -> crate::error::Result<Self> {
+        let bad = |message: String| crate::error::Error::Parse {
             what: "partition",
             line: 1,
             column: 1,
@@ -129,8 +129,8 @@ impl SurfaceMesh {
     /// steps a patch (on a uniform partition the patch edges are mesh lines).
     ///
     /// # Errors
-    /// [`crate::Error::NotPositive`] for a radius that is not positive and finite;
-    /// [`crate::Error::TooFewSamples`] for fewer than 1 step a patch; [`crate::Error::TooLarge`]
+    /// [`crate::error::Error::NotPositive`] for a radius that is not positive and finite;
+    /// [`crate::error::Error::TooFewSamples`] for fewer than 1 step a patch; [`crate::error::Error::TooLarge`]
     /// if the vertices exceed [`crate::error::MAX_ELEMENTS`]; the errors of
     /// [`HermiteSurface::try_from_surface`] and [`Mesh::try_of_surface`].
     pub fn try_new(
@@ -140,7 +140,7 @@ impl SurfaceMesh {
         samples_per_patch: usize,
     ) -> Result<SurfaceMesh> {
         if samples_per_patch == 0 {
-            return Err(crate::Error::TooFewSamples {
+            return Err(crate::error::Error::TooFewSamples {
                 what: "mesh steps per patch",
                 got: 0,
             }
@@ -149,7 +149,7 @@ impl SurfaceMesh {
         let steps = |n: usize| {
             n.checked_mul(samples_per_patch)
                 .and_then(|k| k.checked_add(1))
-                .ok_or(crate::Error::TooLarge {
+                .ok_or(crate::error::Error::TooLarge {
                     what: "mesh samples",
                     got: usize::MAX,
                     max: crate::error::MAX_ELEMENTS,
@@ -190,7 +190,7 @@ impl MeshFormat {
     /// binary unless `ascii`.
     ///
     /// # Errors
-    /// [`crate::Error::Parse`] for another extension.
+    /// [`crate::error::Error::Parse`] for another extension.
     pub fn of_path(path: &Path, ascii: bool) -> Result<MeshFormat> {
         let ext = path
             .extension()
@@ -201,7 +201,7 @@ impl MeshFormat {
             Some("ply") if ascii => Ok(MeshFormat::Ply(PlyEncoding::Ascii)),
             Some("ply") => Ok(MeshFormat::Ply(PlyEncoding::BinaryLittleEndian)),
             Some("stl") => Ok(MeshFormat::Stl),
-            _ => Err(crate::Error::Parse {
+            _ => Err(crate::error::Error::Parse {
                 what: "mesh file name",
                 line: 1,
                 column: 1,

@@ -4,6 +4,7 @@ use super::*;
 use plotters::style::RGBColor;
 use splinelab::report::draw::{self, Plot2d, Plot3d};
 use splinelab::report::figure::{Figure, MAX_SIDE};
+use splinelab::report::frame;
 use splinelab::report::heatmap::{ColorScale, HeatMap};
 use splinelab::report::plot2d::{self, Figure2d, Panel, Series, Style, MAX_PANELS};
 use splinelab::report::render3d::{Marker, Segment, View, SCENE_LIMIT};
@@ -903,9 +904,9 @@ fn plot3_cases() -> Vec<Case> {
 // table: frames, Markdown, HTML, CSV, files and the tables built from studies
 // -----------------------------------------------------------------------------------------
 
-fn extreme_frame() -> Result<table::Frame, String> {
-    use table::Column;
-    ok(table::frame(
+fn extreme_frame() -> Result<frame::Frame, String> {
+    use frame::Column;
+    ok(frame::frame(
         "extreme",
         vec![
             Column::new(
@@ -929,11 +930,11 @@ fn extreme_frame() -> Result<table::Frame, String> {
 }
 
 fn table_cases() -> Vec<Case> {
-    use table::Column;
+    use frame::Column;
     vec![
         case("table::frame_mismatched_lengths", || {
             expect_err!(
-                table::frame(
+                frame::frame(
                     "t",
                     vec![
                         Column::new("a".into(), vec![1.0, 2.0]),
@@ -945,7 +946,7 @@ fn table_cases() -> Vec<Case> {
         }),
         case("table::frame_duplicate_names", || {
             expect_err!(
-                table::frame(
+                frame::frame(
                     "t",
                     vec![
                         Column::new("a".into(), vec![1.0]),
@@ -956,13 +957,13 @@ fn table_cases() -> Vec<Case> {
             )
         }),
         case("frame::try_new_ragged_third_column", || {
-            let got = table::Frame::try_new(vec![
+            let got = frame::Frame::try_new(vec![
                 Column::new("a".into(), vec![1.0, 2.0]),
                 Column::new("b".into(), vec!["x", "y"]),
                 Column::new("c".into(), vec![Some(true)]),
             ]);
             match got {
-                Err(table::FrameError::Ragged {
+                Err(frame::FrameError::Ragged {
                     name,
                     len: 1,
                     height: 2,
@@ -972,18 +973,18 @@ fn table_cases() -> Vec<Case> {
             }
         }),
         case("frame::try_new_names_repeated_apart", || {
-            let got = table::Frame::try_new(vec![
+            let got = frame::Frame::try_new(vec![
                 Column::new("a".into(), vec![1u32]),
                 Column::new("b".into(), vec![2i64]),
                 Column::new("a".into(), vec![3usize]),
             ]);
             match got {
-                Err(table::FrameError::DuplicateName(n)) if n == "a" => Ok(()),
+                Err(frame::FrameError::DuplicateName(n)) if n == "a" => Ok(()),
                 other => Err(format!("{other:?}")),
             }
         }),
         case("frame::try_new_zero_rows", || {
-            let f = ok(table::Frame::try_new(vec![
+            let f = ok(frame::Frame::try_new(vec![
                 Column::new("a".into(), Vec::<f64>::new()),
                 Column::new("b".into(), Vec::<Option<String>>::new()),
             ]))?;
@@ -994,7 +995,7 @@ fn table_cases() -> Vec<Case> {
             Ok(())
         }),
         case("table::frame_of_nothing", || {
-            let df = ok(table::frame("empty", vec![]))?;
+            let df = ok(frame::frame("empty", vec![]))?;
             let t = Table::new("empty", "", df.clone());
             ok(t.to_markdown())?;
             ok(t.to_html())?;
@@ -1027,7 +1028,7 @@ fn table_cases() -> Vec<Case> {
             Ok(())
         }),
         case("table::html_escapes_title_and_notes", || {
-            let t = Table::new("t", "<script>x</script>", ok(table::frame("t", vec![]))?)
+            let t = Table::new("t", "<script>x</script>", ok(frame::frame("t", vec![]))?)
                 .note("a & b < c");
             let html = ok(t.to_html())?;
             ensure!(

@@ -293,7 +293,7 @@ fn guide_choices(target: &Target, s: &[f64]) -> Vec<[Vector2<f64>; 2]> {
     out
 }
 
-/// The cardinal `a` of the starts (tuned on a grid afterwards, [`super::local::tune_parameter`]).
+/// The cardinal `a` of the starts (tuned on a grid afterwards, [`super::polish::tune_parameter`]).
 const START_A: f64 = 0.5;
 
 /// One start: its layout, variables, and the family it comes from.

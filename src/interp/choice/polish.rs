@@ -1,7 +1,7 @@
-//! The local stages of a search (module docs of [`super`], steps 2–4): the cardinal `a` on
-//! a grid, error equidistribution, compass search, and the dense measure of the result.
+//! The polish of a start (module docs of [`super`], steps 2–3): the cardinal `a` on a grid,
+//! error equidistribution, compass search, and the dense measure of the result.
 
-use super::layout::Layout;
+use super::starts::Layout;
 use super::target::Target;
 use super::{Choice, Family, Scratch, Start, GOAL, SEARCH_SAMPLES};
 use crate::error::Result;
