@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every printed formula of the corpus checked by sympy, an independent computer algebra system.
 
-The corpus is `splinelab formulas` (src/report/formula_corpus.rs): surfaces of every supported
+The corpus is `splinelab formulas` (src/symbolic/corpus.rs): surfaces of every supported
 function, B-spline/NURBS/Bézier curves and the interpolating splines (in the global and the
 piece's local variable), the bases and a patch, each with its formulas as printed, which is the
 derivative of which, a box where they hold and reference values from the numeric path. For each

@@ -11,6 +11,12 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// Points a batch path evaluates side by side once it meets a sparse run (the B-spline's
+/// `walk_spans`, the cubic spline's batch): their intervals are found first (the loads of all
+/// of them in flight at once), then their values computed together ([`Lanes`]), so that
+/// independent points overlap instead of each waiting on the memory its interval needs.
+pub(crate) const SPARSE_BLOCK: usize = 8;
+
 /// `G` numbers side by side; every operation acts lane by lane.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Lanes<const G: usize>(pub(crate) [f64; G]);

@@ -11,7 +11,9 @@
 //! - [`HermitePatch`] (`H(s)ᵀ C H(t)`), [`BezierPatch`] (Bernstein and de Casteljau),
 //!   [`HermiteSurface`] (piecewise surfaces over partitions).
 //! - [`study`]: the experiments — seed 000's Hermite error study ([`study::hermite_error`]: §3,
-//!   §6, convergence) and seed 004's Table I ([`study::table_i`]); [`metrics`]: the error
+//!   §6, convergence), the fewest points for an outline ([`study::outline`]: the CLI's
+//!   `fewest`, seed 004's letters and coast) and seed 004's Table I ([`study::table_i`]);
+//!   [`metrics`]: the error
 //!   measures they use (a surface's per-coordinate errors, MATLAB `norm`, max-abs, RMS; a
 //!   curve's Hausdorff distance and smoothness).
 //! - [`ParametricCurve`]: a curve written once, generic over the number type, with exact
@@ -29,18 +31,20 @@
 //!   LaTeX and MathML.
 //! - [`Mesh`]: a surface's triangles on a rectangle with its exact normals (`X_s × X_t`) and
 //!   texture coordinates, for the report layer's OBJ, PLY and STL files (`report::export`).
-//! - [`input`]: users' points from text (CSV, SVG path data, SVG documents), with the line
-//!   and column of what cannot be read.
+//! - [`input`]: users' points from text (CSV, SVG path data, SVG documents) and glyphs of
+//!   fonts, with the line and column of what cannot be read.
 //! - [`seeds`]: the seeds' worked examples as data (knots, points, parameters), no I/O.
 //! - [`report`] (feature `report`, on by default): figures and tables of the user's own
 //!   objects ([`report::draw`], [`report::table`](mod@report::table)), the seeds' outputs built with them, output
 //!   files and benchmarks used by the `splinelab` CLI and the notebooks; a user's own points,
-//!   outlines and partitions through the methods ([`report::user`]: fit, fewest, surface) and
+//!   outlines and partitions through the methods, drawn and tabulated ([`report::user`]: fit,
+//!   fewest, surface) and
 //!   standard files out ([`report::export`]: OBJ, PLY, STL, SVG).
 //!
 //! # Features
 //!
-//! - `report` (default): the report layer — figures (plotters) and tables.
+//! - `report` (default): the report layer — figures (plotters) and tables; implies `svg` (SVG
+//!   documents in, usvg) and `fonts` (glyph outlines, ttf-parser).
 //! - `polars` (default): tables to and from polars DataFrames (`report::Table::to_polars`,
 //!   `Frame::try_from(&DataFrame)`); implies `report`.
 //! - `cli` (default): the `splinelab` program (clap, anyhow); implies `report`.

@@ -172,7 +172,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         return site(out);
     }
     if let Some(Command::Formulas) = cli.command {
-        for entry in splinelab::report::formula_corpus::corpus()? {
+        for entry in splinelab::symbolic::corpus::corpus()? {
             say(entry.to_json())?;
         }
         return Ok(());

@@ -1096,7 +1096,7 @@ impl ParametricSurface for AsinSurface {
 #[cfg(feature = "report")]
 #[test]
 fn local_formulas_and_the_corpus_refuse_bad_points() {
-    use splinelab::report::formula_corpus::{curve_entry, surface_entry};
+    use splinelab::symbolic::corpus::{curve_entry, surface_entry};
     let pts: Vec<nalgebra::Vector2<f64>> = (0..6)
         .map(|i| nalgebra::Vector2::new(i as f64, (i % 2) as f64))
         .collect();
@@ -1118,7 +1118,7 @@ fn local_formulas_and_the_corpus_refuse_bad_points() {
         far.branches
     );
     // the corpus as shipped builds, every entry with samples and finite references
-    let corpus = splinelab::report::formula_corpus::corpus().unwrap();
+    let corpus = splinelab::symbolic::corpus::corpus().unwrap();
     assert!(corpus.len() >= 40);
     for e in &corpus {
         assert!(!e.samples.is_empty(), "{}", e.name);

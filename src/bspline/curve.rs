@@ -4,6 +4,7 @@ use crate::bspline::basis::BSplineBasis;
 use crate::curve::ParametricCurve;
 use crate::error::{finite_points, Error, Result};
 use crate::horner;
+use crate::lanes::SPARSE_BLOCK;
 use nalgebra::SVector;
 use num_dual::DualNum;
 
@@ -188,12 +189,6 @@ pub(crate) fn two_threads(queries: usize, pieces: usize) -> bool {
         }
 }
 
-/// Parameters that [`walk_spans`] evaluates point by point in one block once it meets a
-/// sparse run: their spans are found first (the knot loads of all of them in flight at
-/// once), then their points are computed side by side ([`crate::lanes::Lanes`]), so that
-/// independent points overlap instead of each waiting on the memory its span needs.
-pub(crate) const SPARSE_BLOCK: usize = 8;
-
 /// Reads the first and last control point of each of `spans` (degree `p`) before their basis
 /// values are computed, so that their cache misses overlap with that work instead of stalling
 /// the sums that need them (nothing is kept).
@@ -334,12 +329,12 @@ fn fallback<T>(direct: &impl Fn(usize, f64) -> T, span: usize, t: f64) -> T {
 
 /// Walks a sequence of parameters span by span: each search gallops
 /// ([`BSplineBasis::find_span_near`]) from the uniform guess of the span while it proves
-/// near, else from the previous span (as [`crate::interp::IntervalCursor`]); any order stays
+/// near, else from the previous span (as [`crate::domain::IntervalCursor`]); any order stays
 /// correct.
 struct SpanCursor<'a> {
     basis: &'a BSplineBasis,
     /// The uniform guess of a parameter's span (offset by the degree), trusted while it
-    /// proves near ([`crate::interp::IntervalCursor`]'s rule).
+    /// proves near ([`crate::domain::IntervalCursor`]'s rule).
     guess: crate::domain::UniformGuess,
     span: usize,
     lo: f64,

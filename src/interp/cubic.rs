@@ -1,10 +1,10 @@
 //! Interpolating cubic splines with clamped, natural, periodic and anticyclic ends, built in
 //! O(n) (seed 001, "Spline cubiche di interpolazione"; seed 004 §2 for the anticyclic ends).
 
-use crate::bspline::curve::SPARSE_BLOCK;
 use crate::curve::ParametricCurve;
+use crate::domain::IntervalCursor;
 use crate::error::{finite_points, Error, Result};
-use crate::interp::IntervalCursor;
+use crate::lanes::SPARSE_BLOCK;
 use crate::param::Parametrization;
 use crate::tridiagonal::{solve, solve_twisted, Band, Row};
 use nalgebra::{SVector, Vector1};

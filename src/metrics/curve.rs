@@ -15,7 +15,7 @@
 //! memory whatever the shape of the polyline), searched branch-and-bound; the one-sided
 //! maximum stops searching a point as soon as it is nearer than the largest distance found
 //! so far (Taha & Hanbury's early break), which does not change the result. Both are checked
-//! against the brute-force minimum over all segments (tests/curve_metrics.rs).
+//! against the brute-force minimum over all segments (tests/metrics.rs).
 //!
 //! **Smoothness.** The signed curvature `κ = (x′y″ − y′x″)/|C′|³` from exact derivatives
 //! ([`crate::curve::signed_curvature`]), sampled along each piece, made dimensionless by a

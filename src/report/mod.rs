@@ -29,7 +29,6 @@ pub mod error;
 pub mod export;
 pub mod figure;
 mod files;
-pub mod formula_corpus;
 pub mod frame;
 pub mod heatmap;
 pub mod legend;

@@ -101,8 +101,12 @@
 //!
 //! **No formula:** `%` gives an opaque node carrying its numeric value (printed `rem[…]`);
 //! parsing (`Num::from_str_radix`) is an error.
+//!
+//! **Checked elsewhere:** [`corpus`] lists objects of every kind with their formulas and
+//! reference values, for `splinelab formulas` and `scripts/check_formulas.py` (sympy).
 
 mod canon;
+pub mod corpus;
 mod display;
 // HTML/MathML escaping, also the report layer's (one function for both)
 #[cfg(feature = "report")]

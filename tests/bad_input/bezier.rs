@@ -1,8 +1,19 @@
-//! bezier
+//! bezier: bernstein_all, bernstein_sum, de Casteljau (iterative, recursive, levels, surface),
+//! BezierPatch
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(bernstein_cases());
+    all.extend(de_casteljau_cases());
+    all.extend(patch_cases());
+    all
+}
+
+/// `bernstein_all` and `bernstein_sum`, sums of points at the limits.
+fn bernstein_cases() -> Vec<Case> {
     vec![
         case("bezier::bernstein_all_sums_to_one", || {
             let b = ok(bernstein_all(50, 0.3_f64))?;
@@ -58,6 +69,12 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(finite_vecs(&[a, b]), "{a:?} {b:?}");
             Ok(())
         }),
+    ]
+}
+
+/// `de_casteljau`, `de_casteljau_recursive`, `de_casteljau_levels`, `de_casteljau_surface`.
+fn de_casteljau_cases() -> Vec<Case> {
+    vec![
         case("bezier::de_casteljau_empty", || {
             let none: [Vector2<f64>; 0] = [];
             expect_err!(
@@ -145,6 +162,12 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(p == v3(1.0, 2.0, 3.0), "{p:?}");
             Ok(())
         }),
+    ]
+}
+
+/// `BezierPatch`; NaN, ±inf in every entry of a net.
+fn patch_cases() -> Vec<Case> {
+    vec![
         case("bezier::patch_net_nan", || {
             let mut m = unit_net();
             m[0][3].y = f64::NAN;
@@ -224,6 +247,13 @@ pub(super) fn cases() -> Vec<Case> {
                 "tabulation not finite"
             );
             Ok(())
+        }),
+        case("bezier::sweep_non_finite_net", || {
+            sweep(16 * 3, |bad, k| {
+                let mut m = unit_net();
+                m[k / 12][(k / 3) % 4][k % 3] = bad;
+                expect_err!(BezierPatch::try_from_net(m), Error::NonFinite { .. })
+            })
         }),
     ]
 }

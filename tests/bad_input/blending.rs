@@ -1,8 +1,20 @@
-//! blending
+//! blending: printed_setbval, the window curves (Lagrange, printed B-spline), the OpenGL groups
+//! and polyline, SlidingBicubic; the documented results of the printed procedures
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(window_cases());
+    all.extend(opengl_cases());
+    all.extend(sliding_cases());
+    all
+}
+
+/// `printed_setbval` and the window curves (Lagrange, the printed B-spline and its
+/// polyline).
+fn window_cases() -> Vec<Case> {
     vec![
         case("blending::setbval_rows_sum_to_one", || {
             let b = ok(printed_setbval(6))?;
@@ -101,6 +113,39 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+        case("blending::printed_bspline_ends_documented", || {
+            let pts = some_points(6);
+            let c = ok(WindowCurve::printed_bspline(&pts))?;
+            let (a, b) = c.domain();
+            ensure!(
+                (ok(c.try_point(a))? - pts[0]).amax() < 1e-14,
+                "does not start at P0"
+            );
+            ensure!(
+                (ok(c.try_point(b))? - pts[5]).amax() < 1e-14,
+                "does not end at the last point"
+            );
+            let poly = ok(printed_bspline_polyline(&pts, 6))?;
+            ensure!(poly.len() == 1 + 7 * 6, "{} vertices", poly.len());
+            ensure!(
+                finite_vecs(&poly) && poly[0] == pts[0],
+                "polyline start {:?}",
+                poly[0]
+            );
+            Ok(())
+        }),
+        case("blending::window_try_point_nan", || {
+            let c = ok(WindowCurve::lagrange(&some_points(5)))?;
+            expect_err!(c.try_point(f64::NAN), Error::NonFinite { .. })?;
+            let c = ok(WindowCurve::printed_bspline(&some_points(5)))?;
+            expect_err!(c.try_point(f64::INFINITY), Error::NonFinite { .. })
+        }),
+    ]
+}
+
+/// The OpenGL groups and polyline.
+fn opengl_cases() -> Vec<Case> {
+    vec![
         case("blending::opengl_order_too_low", || {
             expect_err!(
                 opengl_groups(&some_points(5), 1, LastGroup::Truncated),
@@ -192,6 +237,31 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(p.len() == 11 && finite_vecs(&p), "{} points", p.len());
             Ok(())
         }),
+        case("blending::opengl_as_printed_nine_points_documented", || {
+            let pts = some_points(9);
+            let g = ok(opengl_groups(&pts, 5, LastGroup::AsPrinted))?;
+            ensure!(g.len() == 3, "{} groups", g.len());
+            ensure!(g[0] == pts[0..5] && g[1] == pts[4..9], "first groups {g:?}");
+            let third = vec![pts[8], pts[5], pts[6], pts[7], pts[8]];
+            ensure!(
+                g[2] == third,
+                "third group {:?}, printed P8, P5, P6, P7, P8",
+                g[2]
+            );
+            let t = ok(opengl_groups(&pts, 5, LastGroup::Truncated))?;
+            ensure!(
+                t.len() == 2,
+                "truncated: {} groups (a 1-point group is dropped)",
+                t.len()
+            );
+            Ok(())
+        }),
+    ]
+}
+
+/// `SlidingBicubic`; NaN, ±inf in every input of the area.
+fn sliding_cases() -> Vec<Case> {
+    vec![
         case("blending::sliding_too_small_grid", || {
             expect_err!(
                 SlidingBicubic::try_new(&sliding_grid(3, 5, 1.0), Blending::Lagrange),
@@ -273,6 +343,29 @@ pub(super) fn cases() -> Vec<Case> {
                 }
             }
             Ok(())
+        }),
+        case("blending::sweep_non_finite_points", || {
+            sweep(6, |bad, k| {
+                let mut pts = some_points(6);
+                pts[k][k % 2] = bad;
+                expect_err!(WindowCurve::lagrange(&pts), Error::NonFinite { .. })?;
+                expect_err!(WindowCurve::printed_bspline(&pts), Error::NonFinite { .. })?;
+                expect_err!(printed_bspline_polyline(&pts, 6), Error::NonFinite { .. })?;
+                expect_err!(
+                    opengl_groups(&pts, 3, LastGroup::AsPrinted),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(
+                    opengl_polyline(&pts, 4, 8, LastGroup::Truncated),
+                    Error::NonFinite { .. }
+                )?;
+                let mut g = sliding_grid(4, 6, 1.0);
+                g.as_mut_slice()[k * 4][k % 3] = bad;
+                expect_err!(
+                    SlidingBicubic::try_new(&g, Blending::UniformBSpline),
+                    Error::NonFinite { .. }
+                )
+            })
         }),
     ]
 }

@@ -1,8 +1,22 @@
-//! bspline: KnotVector, BSplineBasis, BSplineCurve
+//! bspline: KnotVector, BSplineBasis, BSplineCurve; evaluation near coincident knots and at a
+//! full-multiplicity breakpoint, and the batch evaluation (`eval_many`) against `point()` inside
+//! and outside a very short domain
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(knot_vector_cases());
+    all.extend(open_uniform_cases());
+    all.extend(basis_cases());
+    all.extend(curve_cases());
+    all.extend(evaluation_cases());
+    all
+}
+
+/// `KnotVector::try_new` and `KnotVector::extended_partition`.
+fn knot_vector_cases() -> Vec<Case> {
     vec![
         case("bspline::knots_empty", || {
             expect_err!(
@@ -158,6 +172,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+    ]
+}
+
+/// `KnotVector::open_uniform`.
+fn open_uniform_cases() -> Vec<Case> {
+    vec![
         case("bspline::open_uniform_count_le_degree", || {
             expect_err!(
                 KnotVector::open_uniform(3, 3, 0.0, 1.0),
@@ -206,6 +226,12 @@ pub(super) fn cases() -> Vec<Case> {
                     | Error::GapTooSmall { .. }
             )
         }),
+    ]
+}
+
+/// `BSplineBasis`: construction, derivatives, the right end.
+fn basis_cases() -> Vec<Case> {
+    vec![
         case("bspline::basis_too_few_knots", || {
             let k = ok(KnotVector::try_new(vec![0.0, 0.0, 1.0, 1.0]))?;
             expect_err!(
@@ -341,6 +367,13 @@ pub(super) fn cases() -> Vec<Case> {
             );
             Ok(())
         }),
+    ]
+}
+
+/// `BSplineCurve`: construction, `with_point`, `try_point`, `polyline`, batch evaluation;
+/// NaN, ±inf in every input of the area.
+fn curve_cases() -> Vec<Case> {
+    vec![
         case("bspline::curve_count_mismatch", || {
             expect_err!(
                 BSplineCurve::try_new(basis(2, 5)?, some_points(4)),
@@ -449,6 +482,171 @@ pub(super) fn cases() -> Vec<Case> {
                 let p = ok(c.try_point(*t))?;
                 ensure!((p - q).amax() <= 1e-12 * 10.0, "t = {t}: {p:?} vs {q:?}");
             }
+            Ok(())
+        }),
+        case("bspline::sweep_non_finite_inputs", || {
+            sweep(5, |bad, k| {
+                expect_err!(
+                    KnotVector::try_new(put(vec![0.0, 0.0, 0.5, 1.0, 1.0], k, bad)),
+                    Error::NonFinite { .. }
+                )?;
+                let mut pts = some_points(5);
+                pts[k][k % 2] = bad;
+                expect_err!(
+                    BSplineCurve::try_new(basis(2, 5)?, pts),
+                    Error::NonFinite { .. }
+                )?;
+                let c = ok(BSplineCurve::try_new(basis(2, 5)?, some_points(5)))?;
+                expect_err!(c.with_point(k, v2(bad, 0.0)), Error::NonFinite { .. })?;
+                expect_err!(c.try_point(bad), Error::NonFinite { .. })?;
+                if k < 2 {
+                    let ab = put(vec![0.0, 1.0], k, bad);
+                    expect_err!(
+                        KnotVector::open_uniform(2, 5, ab[0], ab[1]),
+                        Error::NonFinite { .. }
+                    )?;
+                    expect_err!(
+                        KnotVector::extended_partition(
+                            ab[0],
+                            ab[1],
+                            &[0.5],
+                            &[1],
+                            3,
+                            EndKnots::Clamped
+                        ),
+                        Error::NonFinite { .. }
+                    )?;
+                }
+                Ok(())
+            })
+        }),
+    ]
+}
+
+fn short_domain_curve() -> Result<BSplineCurve<2>, String> {
+    let knots = ok(KnotVector::try_new(vec![
+        0.0,
+        1.0,
+        2.0,
+        3.0,
+        3.0 + 1e-9,
+        4.0,
+        5.0,
+        6.0,
+    ]))?;
+    let basis = ok(BSplineBasis::try_new(knots, 3))?;
+    ok(BSplineCurve::try_new(
+        basis,
+        vec![v2(0.0, 0.0), v2(1.0, 2.0), v2(2.0, -1.0), v2(3.0, 1.0)],
+    ))
+}
+
+/// `eval_many` and `point` agree at `ts` to `rel` of the larger value (at least 1).
+fn batch_agrees(c: &BSplineCurve<2>, ts: &[f64], rel: f64) -> CaseResult {
+    let mut out = vec![v2(7.0, 7.0)];
+    c.eval_many(ts, &mut out);
+    ensure!(
+        out.len() == ts.len(),
+        "{} values for {}",
+        out.len(),
+        ts.len()
+    );
+    for (t, o) in ts.iter().zip(&out) {
+        let p = c.point(*t);
+        let scale = o.amax().max(p.amax()).max(1.0);
+        ensure!(
+            (o - p).amax() <= rel * scale,
+            "at {t}: eval_many {o:?}, point {p:?}"
+        );
+    }
+    Ok(())
+}
+
+/// Evaluation near coincident knots and at a full-multiplicity breakpoint; the batch
+/// evaluation against `point()` inside and outside a very short domain.
+fn evaluation_cases() -> Vec<Case> {
+    vec![
+        case("bspline::near_coincident_knots_derivatives_finite", || {
+            let k = ok(KnotVector::try_new(vec![
+                0.0,
+                0.0,
+                0.0,
+                0.5,
+                0.5 + 1e-9,
+                1.0,
+                1.0,
+                1.0,
+            ]))?;
+            let c = ok(BSplineCurve::try_new(
+                ok(BSplineBasis::try_new(k, 2))?,
+                some_points(5),
+            ))?;
+            for t in [0.25, 0.5, 0.5 + 5e-10, 0.5 + 1e-9, 0.75, 1.0] {
+                let [p, d1, d2] = c.derivatives2(t);
+                ensure!(finite_vecs(&[p, d1, d2]), "t = {t}: {p:?} {d1:?} {d2:?}");
+            }
+            Ok(())
+        }),
+        case(
+            "bspline::interior_full_multiplicity_breakpoint_is_right_piece",
+            || {
+                let k = ok(KnotVector::try_new(vec![
+                    0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0,
+                ]))?;
+                let pts = some_points(6);
+                let c = ok(BSplineCurve::try_new(
+                    ok(BSplineBasis::try_new(k, 2))?,
+                    pts.clone(),
+                ))?;
+                let p = ok(c.try_point(0.5))?;
+                ensure!(
+                    (p - pts[3]).amax() < 1e-14,
+                    "C(0.5) = {p:?}, the right piece starts at P3 = {:?}",
+                    pts[3]
+                );
+                let mut out = Vec::new();
+                c.eval_many(&[0.25, 0.5], &mut out);
+                ensure!(
+                    (out[1] - pts[3]).amax() < 1e-14,
+                    "eval_many(0.5) = {:?}",
+                    out[1]
+                );
+                let left = c.point(0.5 - 1e-13);
+                ensure!(
+                    (left - pts[2]).amax() < 1e-9,
+                    "left limit {left:?} vs P2 {:?}",
+                    pts[2]
+                );
+                Ok(())
+            },
+        ),
+        case("bspline::eval_many_outside_a_short_domain", || {
+            let c = short_domain_curve()?;
+            batch_agrees(&c, &[2.999], 1e-6)?;
+            batch_agrees(
+                &c,
+                &[2.9, 2.99, 2.999, 2.999_999, 3.000_001, 3.001, 3.1],
+                1e-6,
+            )
+        }),
+        case("bspline::eval_many_inside_a_short_domain", || {
+            let c = short_domain_curve()?;
+            let ts: Vec<f64> = (0..=16).map(|k| 3.0 + 1e-9 * k as f64 / 16.0).collect();
+            batch_agrees(&c, &ts, 1e-12)
+        }),
+        case("bspline::eval_many_empty_and_non_finite", || {
+            let c = short_domain_curve()?;
+            let mut out = vec![v2(1.0, 1.0)];
+            c.eval_many(&[], &mut out);
+            ensure!(out.is_empty(), "{out:?}");
+            c.eval_many(&[f64::NAN, f64::INFINITY, 3.0], &mut out);
+            ensure!(out.len() == 3, "{out:?}");
+            ensure!(
+                (out[2] - c.point(3.0)).amax() <= 1e-12,
+                "{:?} vs {:?}",
+                out[2],
+                c.point(3.0)
+            );
             Ok(())
         }),
     ]

@@ -2,7 +2,16 @@
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(interval_and_rect_cases());
+    all.extend(partition_cases());
+    all
+}
+
+/// `Interval` and `Rect`.
+fn interval_and_rect_cases() -> Vec<Case> {
     vec![
         case(
             "domain::interval_nan_start",
@@ -68,6 +77,18 @@ pub(super) fn cases() -> Vec<Case> {
         case("domain::rect_square_infinite", || {
             expect_err!(Rect::square(0.0, f64::INFINITY), Error::NonFinite { .. })
         }),
+        case("domain::rect_subnormal_side", || {
+            expect_err!(
+                Rect::try_new(0.0, 1.0, 0.0, 1e-310),
+                Error::GapTooSmall { .. }
+            )
+        }),
+    ]
+}
+
+/// `Partition`; NaN, ±inf in every input of the area.
+fn partition_cases() -> Vec<Case> {
+    vec![
         case("domain::partition_empty", || {
             expect_err!(
                 Partition::try_new(vec![]),
@@ -165,6 +186,22 @@ pub(super) fn cases() -> Vec<Case> {
                 p.locate(0.5)
             );
             Ok(())
+        }),
+        case("domain::sweep_non_finite", || {
+            sweep(4, |bad, k| {
+                let b = put(vec![0.0, 1.0, 2.0, 3.0], k, bad);
+                expect_err!(
+                    Rect::try_new(b[0], b[1], b[2], b[3]),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(Partition::try_new(b.clone()), Error::NonFinite { .. })?;
+                if k < 2 {
+                    expect_err!(Interval::try_new(b[0], b[1]), Error::NonFinite { .. })?;
+                    expect_err!(Partition::uniform(b[0], b[1], 3), Error::NonFinite { .. })?;
+                    expect_err!(Rect::square(b[0], b[1]), Error::NonFinite { .. })?;
+                }
+                Ok(())
+            })
         }),
     ]
 }

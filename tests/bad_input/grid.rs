@@ -1,7 +1,8 @@
-//! grid
+//! grid: Grid::try_from_fn, Grid::from_vec and the Grid::from_fn shorthand
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
     vec![
         risky("grid::try_from_fn_usize_max", || {
@@ -50,6 +51,11 @@ pub(super) fn cases() -> Vec<Case> {
                 panic!("f must not be called")
             }))?;
             ensure!(g.rows() == 0 && g.as_slice().is_empty(), "not empty");
+            Ok(())
+        }),
+        risky("grid::from_fn_shorthand_panics_without_allocating", || {
+            let r = catch_unwind(|| Grid::from_fn(usize::MAX, 2, |_, _| 0u8).rows());
+            ensure!(r.is_err(), "Grid::from_fn(usize::MAX, 2) did not panic");
             Ok(())
         }),
     ]

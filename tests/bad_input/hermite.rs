@@ -2,7 +2,19 @@
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(basis_and_matrix_cases());
+    all.extend(patch_cases());
+    all.extend(spline_construction_cases());
+    all.extend(spline_evaluation_cases());
+    all
+}
+
+/// `hermite_basis` and `HermitePatch::try_from_matrix`; NaN, ±inf in every datum of a
+/// patch.
+fn basis_and_matrix_cases() -> Vec<Case> {
     vec![
         case("hermite::basis_documented_values", || {
             ensure!(
@@ -57,6 +69,31 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             },
         ),
+        case("hermite::sweep_non_finite_data", || {
+            sweep(16 * 3, |bad, k| {
+                let mut c = unit_net();
+                c[k / 12][(k / 3) % 4][k % 3] = bad;
+                expect_err!(HermitePatch::try_from_matrix(c), Error::NonFinite { .. })?;
+                let mut corners = [[partials(1.0, 1.0, 1.0, 1.0); 2]; 2];
+                let p = &mut corners[k % 2][(k / 2) % 2];
+                match (k / 4) % 4 {
+                    0 => p.point[k % 3] = bad,
+                    1 => p.ds[k % 3] = bad,
+                    2 => p.dt[k % 3] = bad,
+                    _ => p.dst[k % 3] = bad,
+                }
+                expect_err!(
+                    HermitePatch::try_from_corners(&corners, 1.0, 1.0),
+                    Error::NonFinite { .. }
+                )
+            })
+        }),
+    ]
+}
+
+/// `HermitePatch::try_from_corners`, `from_surface` and `tabulate`.
+fn patch_cases() -> Vec<Case> {
+    vec![
         case("hermite::corners_zero_width", || {
             let c = [[partials(1.0, 1.0, 1.0, 1.0); 2]; 2];
             expect_err!(HermitePatch::try_from_corners(&c, 0.0, 1.0), Error::NotPositive { value, .. } if *value == 0.0)
@@ -195,6 +232,12 @@ pub(super) fn cases() -> Vec<Case> {
             expect_err!(p.tabulate(usize::MAX, usize::MAX), Error::TooLarge { .. })?;
             expect_err!(p.tabulate(usize::MAX, 2), Error::TooLarge { .. })
         }),
+    ]
+}
+
+/// `HermiteSurface`: construction.
+fn spline_construction_cases() -> Vec<Case> {
+    vec![
         case("hermite::spline_from_surface_nan_node", || {
             let spot = FnSurface::new(|s: HyperDual64, t: HyperDual64| {
                 let bad = if s.re > 0.4 && s.re < 0.6 {
@@ -278,6 +321,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+    ]
+}
+
+/// `HermiteSurface`: evaluation and tabulation; NaN, ±inf in its parameters.
+fn spline_evaluation_cases() -> Vec<Case> {
+    vec![
         case("hermite::spline_try_point_nan", || {
             let sp = ok(HermiteSurface::uniform(
                 &Torus::default(),
@@ -345,5 +394,21 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             },
         ),
+        case("hermite::sweep_non_finite_spline_parameters", || {
+            let sp = ok(HermiteSurface::uniform(
+                &Torus::default(),
+                &Rect::unit(),
+                2,
+                2,
+            ))?;
+            sweep(2, |bad, k| {
+                let uv = put(vec![0.5, 0.5], k, bad);
+                expect_err!(sp.try_point(uv[0], uv[1]), Error::NonFinite { .. })?;
+                expect_err!(
+                    sp.tabulate(&[0.0, uv[0]], &[uv[1], 1.0]),
+                    Error::NonFinite { .. }
+                )
+            })
+        }),
     ]
 }

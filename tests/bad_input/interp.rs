@@ -1,4 +1,6 @@
-//! interp: polynomial, nodes, parametrization, piecewise linear, cubic, collocation
+//! interp: polynomial, nodes, parametrization, piecewise linear, cubic (with `CubicSpline::refit`
+//! and `refit_function`), collocation (with the B-spline route of the cubic spline on nearly
+//! coincident knots)
 
 use super::*;
 
@@ -9,8 +11,28 @@ fn anticyclic_data() -> (Vec<f64>, Vec<f64>) {
     (x, y)
 }
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
-    let mut cases = vec![
+    let mut all = Vec::new();
+    all.extend(power_cases());
+    all.extend(vandermonde_and_lagrange_cases());
+    all.extend(nodes_and_max_error_cases());
+    all.extend(parametrization_cases());
+    all.extend(linear_cases());
+    all.extend(cubic_cases());
+    all.extend(cubic_extreme_cases());
+    all.extend(refit_cases());
+    all.extend(refit_end_and_size_cases());
+    all.extend(collocation_cases());
+    all.extend(schoenberg_whitney_and_cubic_collocation_cases());
+    all.extend(near_knots_cases());
+    all.extend(curve_cases());
+    all
+}
+
+/// `PowerPolynomial::interpolate`.
+fn power_cases() -> Vec<Case> {
+    vec![
         case("interp::power_empty", || {
             expect_err!(
                 PowerPolynomial::interpolate(&[], &[]),
@@ -103,6 +125,25 @@ pub(super) fn cases() -> Vec<Case> {
             let y = vec![0.0; x.len()];
             expect_err!(PowerPolynomial::interpolate(&x, &y), Error::TooLarge { .. })
         }),
+        case("interp::power_offset_nodes_refused_or_interpolates", || {
+            let x: Vec<f64> = (0..12).map(|k| 1e6 + k as f64).collect();
+            let y: Vec<f64> = x.iter().map(|v| (v - 1e6).sqrt()).collect();
+            match PowerPolynomial::interpolate(&x, &y) {
+                Err(
+                    Error::IllConditioned { .. }
+                    | Error::SingularSystem { .. }
+                    | Error::Overflow { .. },
+                ) => Ok(()),
+                Err(e) => Err(format!("unexpected error {e:?}")),
+                Ok(p) => check_interpolates(&x, &y, |t| p.eval(t)),
+            }
+        }),
+    ]
+}
+
+/// `vandermonde_condition` and `Lagrange`.
+fn vandermonde_and_lagrange_cases() -> Vec<Case> {
+    vec![
         risky("interp::vandermonde_condition_nan", || {
             expect_err!(
                 vandermonde_condition(&[f64::NAN, 1.0, 2.0]),
@@ -232,6 +273,18 @@ pub(super) fn cases() -> Vec<Case> {
             let y = vec![0.0; x.len()];
             expect_err!(Lagrange::try_new(&x, &y), Error::TooLarge { .. })
         }),
+        case("interp::lagrange_nodes_width_overflows", || {
+            expect_err!(
+                Lagrange::try_new(&[-1e308, 0.0, 1e308], &[1.0, 2.0, 3.0]),
+                Error::Overflow { .. }
+            )
+        }),
+    ]
+}
+
+/// `NodeFamily::nodes` and `max_interpolation_error`.
+fn nodes_and_max_error_cases() -> Vec<Case> {
+    vec![
         case("interp::nodes_nan_bound", || {
             expect_err!(
                 NodeFamily::Chebyshev.nodes(f64::NAN, 1.0, 3),
@@ -343,6 +396,12 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(c.is_finite() && c < e, "Chebyshev {c} vs equispaced {e}");
             Ok(())
         }),
+    ]
+}
+
+/// `Parametrization::parameters`.
+fn parametrization_cases() -> Vec<Case> {
+    vec![
         case("interp::param_one_point", || {
             expect_err!(
                 Parametrization::ChordLength.parameters(&[v2(0.0, 0.0)]),
@@ -402,6 +461,12 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
+    ]
+}
+
+/// `PiecewiseLinear`.
+fn linear_cases() -> Vec<Case> {
+    vec![
         case("interp::linear_count_mismatch", || {
             expect_err!(
                 PiecewiseLinear::try_new(&[0.0, 1.0], &[v1(0.0)]),
@@ -495,6 +560,18 @@ pub(super) fn cases() -> Vec<Case> {
                 }
             },
         ),
+        case("interp::linear_abscissae_width_overflows", || {
+            expect_err!(
+                PiecewiseLinear::try_new(&[-1e308, 1e308], &[v1(0.0), v1(1.0)]),
+                Error::Overflow { .. }
+            )
+        }),
+    ]
+}
+
+/// `CubicSpline`: refused data and end conditions.
+fn cubic_cases() -> Vec<Case> {
+    vec![
         case("interp::cubic_count_mismatch", || {
             expect_err!(
                 CubicSpline::function(&[0.0, 1.0, 2.0], &[0.0, 1.0], EndCondition::Natural),
@@ -600,6 +677,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::NonFinite { .. }
             )
         }),
+    ]
+}
+
+/// `CubicSpline`: extreme data, the right end, curves.
+fn cubic_extreme_cases() -> Vec<Case> {
+    vec![
         case("interp::cubic_clamped_huge_derivative", || {
             expect_err!(
                 CubicSpline::function(
@@ -712,11 +795,259 @@ pub(super) fn cases() -> Vec<Case> {
                 }
             },
         ),
-    ];
-    cases.extend(collocation_cases());
-    cases
+        case("interp::cubic_abscissae_width_overflows", || {
+            expect_err!(
+                CubicSpline::function(
+                    &[-1e308, 0.0, 1e308],
+                    &[0.0, 1.0, 0.0],
+                    EndCondition::Natural
+                ),
+                Error::Overflow { .. }
+            )
+        }),
+        case(
+            "interp::cubic_clamped_huge_slopes_refused_or_interpolates",
+            || {
+                // end slopes of 1e306 on unit data: the moments are representable
+                let x = [0.0, 1.0, 2.0];
+                let y = [0.0, 1.0, 0.0];
+                match CubicSpline::function(&x, &y, EndCondition::clamped(1e306, -1e306)) {
+                    Err(Error::Overflow { .. } | Error::IllConditioned { .. }) => Ok(()),
+                    Err(e) => Err(format!("unexpected error {e:?}")),
+                    Ok(s) => check_interpolates(&x, &y, |t| s.value(t)),
+                }
+            },
+        ),
+    ]
 }
 
+/// The natural spline function through 4 points, to be refitted.
+fn natural4() -> Result<CubicSpline<1>, String> {
+    ok(CubicSpline::function(
+        &[0.0, 1.0, 2.0, 3.0],
+        &[0.0, 1.0, 0.0, 1.0],
+        EndCondition::Natural,
+    ))
+}
+
+/// A spline function reproduces its data exactly and is finite on its domain.
+fn check_function(s: &CubicSpline<1>, x: &[f64], y: &[f64]) -> CaseResult {
+    for (xi, yi) in x.iter().zip(y) {
+        ensure!(
+            s.value(*xi) == *yi,
+            "s({xi:e}) = {:e}, not {yi:e}",
+            s.value(*xi)
+        );
+    }
+    let (a, b) = (x[0], x[x.len() - 1]);
+    for k in 0..=64 {
+        let t = a + (b - a) * (k as f64 / 64.0);
+        let t = if t.is_finite() { t } else { 0.5 * a + 0.5 * b };
+        ensure!(s.value(t).is_finite(), "s({t:e}) = {}", s.value(t));
+    }
+    Ok(())
+}
+
+/// `CubicSpline::refit` and `refit_function`: the data.
+fn refit_cases() -> Vec<Case> {
+    vec![
+        case("interp::sweep_non_finite_abscissa", || {
+            sweep(4, |bad, k| {
+                let x = put(vec![0.0, 1.0, 2.0, 3.0], k, bad);
+                expect_err!(
+                    natural4()?.refit_function(&x, &[0.0, 1.0, 0.0, 1.0]),
+                    Error::NonFinite { .. }
+                )
+            })
+        }),
+        case("interp::sweep_non_finite_value_2d", || {
+            sweep(8, |bad, k| {
+                let s = ok(CubicSpline::try_new(
+                    &[0.0, 1.0, 2.0, 3.0],
+                    &four_points(),
+                    EndCondition::Natural,
+                ))?;
+                let mut p = four_points();
+                p[k / 2][k % 2] = bad;
+                expect_err!(s.refit(&[0.0, 1.0, 2.0, 3.0], &p), Error::NonFinite { .. })
+            })
+        }),
+        case("interp::gap_below_min_positive", || {
+            for gap in [5e-324, 1e-310] {
+                expect_err!(
+                    natural4()?.refit_function(&[0.0, gap, 1.0], &[0.0, 1.0, 0.0]),
+                    Error::GapTooSmall { .. }
+                )?;
+            }
+            Ok(())
+        }),
+        case("interp::decreasing_and_repeated", || {
+            expect_err!(
+                natural4()?.refit_function(&[0.0, 2.0, 1.0], &[0.0; 3]),
+                Error::NotIncreasing { index: 2, .. }
+            )?;
+            expect_err!(
+                natural4()?.refit_function(&[0.0, -0.0, 1.0], &[0.0; 3]),
+                Error::RepeatedParameter { index: 1, .. }
+            )
+        }),
+        case("interp::abscissae_width_overflows", || {
+            expect_err!(
+                natural4()?.refit_function(&[-f64::MAX, 0.0, f64::MAX], &[0.0, 1.0, 0.0]),
+                Error::Overflow { .. }
+            )
+        }),
+        case("interp::huge_abscissae", || {
+            let x = [-1e307, -1e306, 1e306, 8e307];
+            let y = [0.0, 1.0, -1.0, 2.0];
+            match natural4()?.refit_function(&x, &y) {
+                Ok(s) => check_function(&s, &x, &y),
+                Err(Error::Overflow { .. }) => Ok(()),
+                Err(e) => Err(format!("unexpected {e}")),
+            }
+        }),
+        case("interp::values_beyond_coordinate_limit", || {
+            for v in [2.0 * MAX_COORDINATE, -f64::MAX] {
+                expect_err!(
+                    natural4()?.refit_function(&[0.0, 1.0, 2.0], &[0.0, v, 0.0]),
+                    Error::CoordinateTooLarge { .. }
+                )?;
+            }
+            Ok(())
+        }),
+        case("interp::values_near_coordinate_limit", || {
+            let m = MAX_COORDINATE;
+            let x = [0.0, 1e-3, 2e-3, 1.0];
+            let y = [m, -m, m, -m];
+            match natural4()?.refit_function(&x, &y) {
+                Ok(s) => check_function(&s, &x, &y),
+                Err(Error::Overflow { .. }) => Ok(()),
+                Err(e) => Err(format!("unexpected {e}")),
+            }
+        }),
+        case("interp::tiny_and_subnormal_values", || {
+            for v in [1e-300, 5e-324] {
+                let x = [0.0, 1.0, 2.0, 3.0];
+                let y = [v, -v, 2.0 * v, 0.0];
+                let s = ok(natural4()?.refit_function(&x, &y))?;
+                check_function(&s, &x, &y)?;
+            }
+            Ok(())
+        }),
+        case("interp::tiny_abscissae", || {
+            let x = [1e-300, 2e-300, 3e-300, 5e-300];
+            let y = [0.0, 1.0, 0.0, 1.0];
+            match natural4()?.refit_function(&x, &y) {
+                Ok(s) => check_function(&s, &x, &y),
+                Err(Error::Overflow { .. }) => Ok(()),
+                Err(e) => Err(format!("unexpected {e}")),
+            }
+        }),
+        case("interp::periodic_mismatch_and_too_few", || {
+            let p = ok(CubicSpline::function(
+                &[0.0, 1.0, 2.0],
+                &[0.0, 1.0, 0.0],
+                EndCondition::Periodic,
+            ))?;
+            expect_err!(
+                p.clone().refit_function(&[0.0, 1.0, 2.0], &[0.0, 1.0, 0.5]),
+                Error::PeriodicEndsMismatch { .. }
+            )?;
+            expect_err!(
+                p.refit_function(&[0.0, 1.0], &[0.0, 0.0]),
+                Error::TooFewPoints { needed: 3, .. }
+            )
+        }),
+    ]
+}
+
+/// `CubicSpline::refit` and `refit_function`: end conditions and sizes.
+fn refit_end_and_size_cases() -> Vec<Case> {
+    vec![
+        case("interp::clamped_ends_non_finite", || {
+            for bad in NON_FINITE {
+                for end in [
+                    EndCondition::clamped(bad, 0.0),
+                    EndCondition::clamped(0.0, bad),
+                ] {
+                    expect_err!(
+                        CubicSpline::function(&[0.0, 1.0, 2.0], &[0.0, 1.0, 0.0], end),
+                        Error::NonFinite { .. }
+                    )?;
+                }
+            }
+            Ok(())
+        }),
+        case("interp::clamped_ends_huge", || {
+            let x = [0.0, 1.0, 2.0];
+            let y = [0.0, 1.0, 0.0];
+            for d in [1e300, MAX_COORDINATE] {
+                match CubicSpline::function(&x, &y, EndCondition::clamped(d, -d)) {
+                    Ok(s) => check_function(&s, &x, &y)?,
+                    Err(Error::Overflow { .. }) => {}
+                    Err(e) => return Err(format!("{d:e}: unexpected {e}")),
+                }
+            }
+            expect_err!(
+                CubicSpline::function(&x, &y, EndCondition::clamped(f64::MAX, 0.0)),
+                Error::CoordinateTooLarge { .. }
+            )
+        }),
+        case("interp::larger_then_smaller_data", || {
+            let x: Vec<f64> = (0..2000).map(|i| i as f64 * 0.01).collect();
+            let y: Vec<f64> = x.iter().map(|t| t.sin()).collect();
+            let s = ok(natural4()?.refit_function(&x, &y))?;
+            check_function(&s, &x, &y)?;
+            let s = ok(s.refit_function(&[0.0, 1.0], &[3.0, 4.0]))?;
+            ensure!(s.nodes() == [0.0, 1.0], "{:?}", s.nodes());
+            check_function(&s, &[0.0, 1.0], &[3.0, 4.0])
+        }),
+        case("interp::every_end_condition", || {
+            let x = [0.0, 0.5, 1.5, 3.0, 3.25];
+            let y = [1.0, -1.0, 2.0, 0.5, 1.0];
+            for end in [
+                EndCondition::Natural,
+                EndCondition::Periodic,
+                EndCondition::Cyclic,
+                EndCondition::Anticyclic,
+                EndCondition::clamped(1.0, -1.0),
+            ] {
+                let s = ok(CubicSpline::function(
+                    &[0.0, 1.0, 2.0],
+                    &[1.0, 0.0, 1.0],
+                    end,
+                ))?;
+                let s = ok(s.refit_function(&x, &y))
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", end)))?;
+                check_function(&s, &x, &y)
+                    .map_err(|e| format!("{}: {e}", format_args!("{:?}", end)))?;
+            }
+            Ok(())
+        }),
+        case("interp::curve_2d_count_mismatch", || {
+            let s = ok(CubicSpline::try_new(
+                &[0.0, 1.0, 2.0, 3.0],
+                &four_points(),
+                EndCondition::Natural,
+            ))?;
+            expect_err!(
+                s.refit(&[0.0, 1.0, 2.0], &four_points()),
+                Error::CountMismatch {
+                    expected: 3,
+                    got: 4,
+                    ..
+                }
+            )
+        }),
+        risky("interp::too_many_points", || {
+            let x: Vec<f64> = (0..=MAX_ELEMENTS).map(|i| i as f64).collect();
+            let y = vec![0.0; MAX_ELEMENTS + 1];
+            expect_err!(natural4()?.refit_function(&x, &y), Error::TooLarge { .. })
+        }),
+    ]
+}
+
+/// `collocation::interpolate`.
 fn collocation_cases() -> Vec<Case> {
     vec![
         case("interp::collocation_values_mismatch", || {
@@ -820,6 +1151,12 @@ fn collocation_cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+    ]
+}
+
+/// `schoenberg_whitney` and the B-spline route of the cubic spline (`collocation::cubic_spline`).
+fn schoenberg_whitney_and_cubic_collocation_cases() -> Vec<Case> {
+    vec![
         case(
             "interp::schoenberg_whitney_more_sites_than_functions",
             || {
@@ -907,6 +1244,100 @@ fn collocation_cases() -> Vec<Case> {
                 }
             )
         }),
+        case("interp::collocation_cubic_matches_tridiagonal", || {
+            let x = [0.0, 0.3, 0.35, 0.8, 1.0];
+            let y = [0.0, 1.0, -1.0, 0.5, 0.0];
+            let yv: Vec<Vector1<f64>> = y.iter().map(|v| v1(*v)).collect();
+            for end in [
+                EndCondition::Natural,
+                EndCondition::Anticyclic,
+                EndCondition::Periodic,
+                EndCondition::clamped(1.0, -1.0),
+            ] {
+                let a = ok(CubicSpline::function(&x, &y, end))?;
+                let b = ok(collocation::cubic_spline(&x, &yv, end))?;
+                for t in linspace(0.0, 1.0, 101) {
+                    let (u, v) = (a.value(t), b.point(t).x);
+                    ensure!(
+                        (u - v).abs() < 1e-9,
+                        "{}: t = {t}: {u} vs {v}",
+                        format_args!("{:?}", end)
+                    );
+                }
+            }
+            Ok(())
+        }),
+    ]
+}
+
+/// The B-spline route through `(x, y)` with `end`: solved, interpolating within
+/// [`RESIDUAL_TOLERANCE`] of the data scale (refusing as ill-conditioned fails the case).
+fn collocation_solves(x: &[f64], y: &[f64], end: EndCondition<1>) -> CaseResult {
+    let ys: Vec<Vector1<f64>> = y.iter().map(|&v| v1(v)).collect();
+    let c = ok(collocation::cubic_spline(x, &ys, end))?;
+    let scale = y.iter().map(|v| v.abs()).fold(f64::MIN_POSITIVE, f64::max);
+    for (xi, yi) in x.iter().zip(y) {
+        let e = (c.point(*xi)[0] - yi).abs();
+        ensure!(
+            e <= RESIDUAL_TOLERANCE * scale,
+            "{}: misses {yi} at {xi} by {e:e}",
+            format_args!("{:?}", end)
+        );
+    }
+    let line = ok(c.polyline(200))?;
+    ensure!(finite_vecs(&line), "not finite");
+    Ok(())
+}
+
+/// The B-spline route of the cubic spline on nearly coincident knots.
+fn near_knots_cases() -> Vec<Case> {
+    vec![
+        case("interp::natural_knots_1e-8_apart", || {
+            collocation_solves(
+                &[0.0, 1.0, 1.0 + 1e-8, 2.0, 3.0],
+                &[0.0, 1.0, 1.0, 0.0, 1.0],
+                EndCondition::Natural,
+            )
+        }),
+        case("interp::clamped_knots_1e-8_apart", || {
+            collocation_solves(
+                &[0.0, 1.0, 1.0 + 1e-8, 2.0, 3.0],
+                &[0.0, 1.0, 1.0, 0.0, 1.0],
+                EndCondition::clamped(0.0, 0.0),
+            )
+        }),
+        case("interp::natural_two_close_pairs", || {
+            collocation_solves(
+                &[0.0, 1e-8, 1.0, 2.0, 2.0 + 1e-8, 3.0],
+                &[0.0, 0.0, 1.0, -1.0, -1.0, 0.5],
+                EndCondition::Natural,
+            )
+        }),
+        case("interp::uniform_spacing_1e-8", || {
+            let x: Vec<f64> = (0..8).map(|i| i as f64 * 1e-8).collect();
+            let y: Vec<f64> = (0..8).map(|i| (i as f64).sin()).collect();
+            collocation_solves(&x, &y, EndCondition::Natural)?;
+            collocation_solves(&x, &y, EndCondition::clamped(0.0, 0.0))
+        }),
+        case("interp::non_finite_and_subnormal_sites", || {
+            let y = [v1(0.0), v1(1.0), v1(0.0)];
+            for bad in NON_FINITE {
+                expect_err!(
+                    collocation::cubic_spline(&[0.0, bad, 2.0], &y, EndCondition::Natural),
+                    Error::NonFinite { .. }
+                )?;
+            }
+            expect_err!(
+                collocation::cubic_spline(&[0.0, 5e-324, 2.0], &y, EndCondition::Natural),
+                Error::GapTooSmall { .. }
+            )
+        }),
+    ]
+}
+
+/// `interpolate_curve`; NaN, ±inf in every input of the area.
+fn curve_cases() -> Vec<Case> {
+    vec![
         case("interp::curve_degree_zero", || {
             expect_err!(
                 interpolate_curve(&some_points(5), 0, Parametrization::Uniform),
@@ -966,6 +1397,80 @@ fn collocation_cases() -> Vec<Case> {
                 );
             }
             Ok(())
+        }),
+        case("interp::sweep_non_finite_data", || {
+            sweep(4, |bad, k| {
+                let x = vec![0.0, 1.0, 2.0, 3.0];
+                let y = vec![1.0, -1.0, 2.0, 1.0];
+                let (bx, by) = (put(x.clone(), k, bad), put(y.clone(), k, bad));
+                expect_err!(
+                    PowerPolynomial::interpolate(&bx, &y),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(
+                    PowerPolynomial::interpolate(&x, &by),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(Lagrange::try_new(&bx, &y), Error::NonFinite { .. })?;
+                expect_err!(Lagrange::try_new(&x, &by), Error::NonFinite { .. })?;
+                let yv: Vec<Vector1<f64>> = y.iter().map(|v| v1(*v)).collect();
+                let byv: Vec<Vector1<f64>> = by.iter().map(|v| v1(*v)).collect();
+                expect_err!(PiecewiseLinear::try_new(&bx, &yv), Error::NonFinite { .. })?;
+                expect_err!(PiecewiseLinear::try_new(&x, &byv), Error::NonFinite { .. })?;
+                for end in [EndCondition::Natural, EndCondition::Anticyclic] {
+                    expect_err!(CubicSpline::function(&bx, &y, end), Error::NonFinite { .. })?;
+                    expect_err!(CubicSpline::function(&x, &by, end), Error::NonFinite { .. })?;
+                    expect_err!(
+                        collocation::cubic_spline(&bx, &yv, end),
+                        Error::NonFinite { .. }
+                    )?;
+                    expect_err!(
+                        collocation::cubic_spline(&x, &byv, end),
+                        Error::NonFinite { .. }
+                    )?;
+                }
+                expect_err!(
+                    CubicSpline::function(
+                        &x,
+                        &y,
+                        EndCondition::clamped(
+                            if k % 2 == 0 { bad } else { 0.0 },
+                            if k % 2 == 1 { bad } else { 0.0 }
+                        )
+                    ),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(vandermonde_condition(&bx), Error::NonFinite { .. })?;
+                let sites = put(vec![0.0, 0.3, 0.7, 1.0], k, bad);
+                expect_err!(
+                    schoenberg_whitney(&basis(2, 4)?, &sites),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(
+                    collocation::interpolate(basis(2, 4)?, &sites, &[v1(0.0); 4], &[]),
+                    Error::NonFinite { .. }
+                )?;
+                let mut pts = some_points(4);
+                pts[k][k % 2] = bad;
+                for p in Parametrization::ALL {
+                    expect_err!(p.parameters(&pts), Error::NonFinite { .. })?;
+                }
+                expect_err!(
+                    interpolate_curve(&pts, 2, Parametrization::ChordLength),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(
+                    CubicSpline::curve(&pts, Parametrization::Uniform, EndCondition::Natural),
+                    Error::NonFinite { .. }
+                )?;
+                if k < 2 {
+                    let ab = put(vec![-1.0, 1.0], k, bad);
+                    for family in [NodeFamily::Equispaced, NodeFamily::Chebyshev] {
+                        expect_err!(family.nodes(ab[0], ab[1], 4), Error::NonFinite { .. })?;
+                    }
+                }
+                Ok(())
+            })
         }),
     ]
 }

@@ -36,11 +36,16 @@
 //! # Layout
 //!
 //! This file is the harness (cases, child processes, the three tests) and the helpers that
-//! several areas share; each area's cases are a module of their own, its name the prefix of
-//! its cases' names: `domain`, `grid`, `surface`, `hermite`, `bezier`, `bspline`, `nurbs`,
-//! `interp` (interpolation and collocation), `metrics`, `study`, `blending`, `report`,
-//! `more` (combinations across areas), `shorthand`, `sweep`, `seed004`, `fast_paths`,
-//! `symbolic`, and `new_api/` (the API of seed 004 and issue 13, a folder of its own areas).
+//! several areas share. The rule: **the bad cases of area `X` are in `X.rs`, and each case's
+//! name starts with `X::`** (one area per file, the file's `cases()` returns all of them). The
+//! areas: `angular` (the Angular spline's chord-line limits), `bezier`, `blending`, `bspline`,
+//! `choice` (the automatic point choice), `domain`, `fast_paths` (refit and batch evaluation),
+//! `grid`, `hermite`, `input` (CSV, SVG paths, fonts), `interp` (interpolation, refit and
+//! collocation), `mesh`, `methods` (seed 004's methods and point rules), `metrics` (surface and
+//! curve metrics), `nurbs`, `plot` (the figure builders), `report` (files, figures, tables),
+//! `seed004` (its curves and the letter "a"), `shapes`, `shorthand`, `study`, `surface`,
+//! `symbolic` and `user` (the report layer's user functions); `plot`, `report` and `user` need
+//! the feature `report`.
 //!
 //! # Running one case
 //!
@@ -54,7 +59,7 @@
 //! With the variable set, `catalog` and `risky_cases_in_child_processes` do nothing and
 //! `single_case` runs the named case, printing `BAD_INPUT_CASE_RESULT pass` or
 //! `BAD_INPUT_CASE_RESULT fail: …`. `cargo test --test bad_input -- --nocapture` prints the
-//! case count per module.
+//! case count per area.
 
 use nalgebra::{DMatrix, SVector, Vector1, Vector2, Vector3};
 use num_dual::{DualNum, HyperDual64};
@@ -62,22 +67,28 @@ use splinelab::blending::opengl::{opengl_groups, opengl_polyline, LastGroup};
 use splinelab::blending::surface::SlidingBicubic;
 use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
 use splinelab::error::{MAX_COORDINATE, MAX_ELEMENTS};
+use splinelab::interp::choice::{Choice, Measure, SearchOptions, Target};
 use splinelab::interp::collocation::{
     self, interpolate_curve, schoenberg_whitney, Condition, DerivativeOrder,
 };
 use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition};
 use splinelab::interp::RESIDUAL_TOLERANCE;
+use splinelab::metrics::curve::{Distances, Smoothness};
 use splinelab::metrics::surface::ErrorAccumulator;
+#[cfg(feature = "report")]
+use splinelab::report::{draw::Plot2d, figure::Figure, Error as RError};
+use splinelab::shapes::Shape;
 use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
 use splinelab::{
     bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
     de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point, hermite_basis,
     matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors,
     tabulate, uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch,
-    Blending, CardinalSpline, CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface,
-    Grid, HermiteCurve, HermitePatch, HermiteSurface, Interval, KnotVector, Lagrange, NodeFamily,
-    NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PatchEvaluation,
-    PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
+    Blending, CardinalSpline, CubicEnd, CubicSpline, EndCondition, EndKnots, Error, ExpSurface,
+    FnSurface, Grid, HermiteCurve, HermitePatch, HermiteSurface, Interpolant, Interval, KnotVector,
+    Lagrange, Method, NodeFamily, NurbsCurve, ParametricCurve, Parametrization, Partials,
+    Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives,
+    Torus,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
@@ -394,55 +405,300 @@ fn expect_panic<T>(what: &str, f: impl FnOnce() -> T + std::panic::UnwindSafe) -
     }
 }
 
+// helpers shared by the areas of seed 004's API (methods, shapes, curve metrics, point choice,
+// studies, figures)
+
+/// One method of every family, the cubic spline with each of its ends.
+fn all_methods() -> Vec<Method> {
+    vec![
+        Method::Angular,
+        Method::Cardinal { a: 0.5 },
+        Method::Cubic {
+            end: CubicEnd::Relaxed,
+        },
+        Method::Cubic {
+            end: CubicEnd::Cyclic,
+        },
+        Method::Cubic {
+            end: CubicEnd::Anticyclic,
+        },
+        Method::BSpline { order: 3 },
+        Method::Linear,
+    ]
+}
+
+/// Six points without collinear triples (open or closed), times `scale`.
+fn six_points(scale: f64) -> Vec<Vector2<f64>> {
+    [
+        (0.0, 0.0),
+        (1.0, 1.0),
+        (2.0, 0.0),
+        (3.0, 1.0),
+        (4.0, 0.5),
+        (5.0, 2.0),
+    ]
+    .iter()
+    .map(|&(x, y)| v2(x * scale, y * scale))
+    .collect()
+}
+
+/// The defining property of a method's curve through `points`: finite samples, and the
+/// points interpolated (the B-spline: its end control points) to `1e-13` of their scale.
+fn check_curve(m: &Method, points: &[Vector2<f64>], closed: bool, c: &Interpolant) -> CaseResult {
+    let line = ok(c.polyline(257))?;
+    ensure!(
+        finite_vecs(&line),
+        "{}: a sample is not finite",
+        format_args!("{:?}", m)
+    );
+    let all = m.prepared(points, closed);
+    let scale = all
+        .iter()
+        .map(|p| p.amax())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let tol = 1e-13 * scale;
+    let miss = |t: f64, p: &Vector2<f64>| (c.point(t) - p).amax();
+    match m {
+        Method::BSpline { .. } => {
+            let (a, b) = c.domain();
+            let e = miss(a, &all[0]).max(miss(b, &all[all.len() - 1]));
+            ensure!(
+                e <= tol,
+                "{}: misses its end points by {e:e}",
+                format_args!("{:?}", m)
+            );
+        }
+        Method::Angular | Method::Cardinal { .. } => {
+            for (j, p) in all[1..all.len() - 1].iter().enumerate() {
+                let e = miss(j as f64, p);
+                ensure!(
+                    e <= tol,
+                    "{}: misses point {} by {e:e}",
+                    format_args!("{:?}", m),
+                    j + 1
+                );
+            }
+        }
+        Method::Cubic { .. } | Method::Linear => {
+            let breaks = c.breaks();
+            ensure!(
+                breaks.len() == all.len(),
+                "{}: {} breaks for {} points",
+                format_args!("{:?}", m),
+                breaks.len(),
+                all.len()
+            );
+            for (j, (t, p)) in breaks.iter().zip(&all).enumerate() {
+                let e = miss(*t, p);
+                ensure!(
+                    e <= tol,
+                    "{}: misses point {j} by {e:e}",
+                    format_args!("{:?}", m)
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The shapes with parameters, each parameter position replaced by `bad` (the rectangle in
+/// either side).
+fn shapes_with(bad: f64) -> Vec<Shape> {
+    vec![
+        Shape::Ellipse { ratio: bad },
+        Shape::Parabola { half_width: bad },
+        Shape::Hyperbola { b: bad },
+        Shape::Sinusoid { periods: bad },
+        Shape::Rectangle {
+            width: bad,
+            height: 1.0,
+        },
+        Shape::Rectangle {
+            width: 2.0,
+            height: bad,
+        },
+    ]
+}
+
+/// `|got − want| ≤ rel · |want|`, and `want > 0` so that a zero is never mistaken for it.
+fn close(what: &str, got: f64, want: f64, rel: f64) -> CaseResult {
+    ensure!(
+        want > 0.0 && want.is_finite(),
+        "{what}: the reference is {want:e}"
+    );
+    ensure!(
+        (got - want).abs() <= rel * want,
+        "{what}: got {got:e}, the rescaled computation gives {want:e} (relative error {:e})",
+        (got - want).abs() / want
+    );
+    Ok(())
+}
+
+/// The rectangle 2 × 1 as a closed polyline of `samples` segments, tolerance 1 % of 2.
+fn rectangle_target(samples: usize) -> Result<Target, String> {
+    let r = Shape::Rectangle {
+        width: 2.0,
+        height: 1.0,
+    };
+    ok(Target::polyline(&ok(r.reference(samples))?, true, 0.02))
+}
+
+/// Search options of at most `max_points` points and a small budget per coordinate.
+fn options(max_points: usize) -> SearchOptions {
+    SearchOptions {
+        max_points,
+        budget_per_coordinate: 10,
+        ..SearchOptions::default()
+    }
+}
+
+/// A search result that claims to meet the tolerance with `points`, counted as `counted`.
+fn bogus_choice(method: Method, points: Vec<Vector2<f64>>, counted: usize) -> Choice {
+    Choice {
+        method,
+        points,
+        measure: Measure {
+            distances: Distances {
+                curve_to_reference: 0.0,
+                reference_to_curve: 0.0,
+            },
+            smoothness: Smoothness {
+                inflections: 0,
+                max_jump: 0.0,
+                max_curvature: 0.0,
+                singular: 0,
+            },
+            counted,
+        },
+        within_tolerance: true,
+        evaluations: 0,
+        start: splinelab::interp::choice::Start::Known,
+    }
+}
+
+// helpers shared by the report's areas (`report`, `plot`)
+
+/// Blue, for the series and markers of the report's figures.
+#[cfg(feature = "report")]
+const BLUE: plotters::style::RGBColor = plotters::style::RGBColor(0, 0, 255);
+
+/// A figure drawn as SVG: `Ok` (an SVG document) or a typed [`RError::Figure`] —
+/// never a panic or a hang.
+#[cfg(feature = "report")]
+fn svg_or_refused(fig: &Figure) -> CaseResult {
+    match fig.to_svg() {
+        Ok(svg) => {
+            ensure!(svg.contains("<svg"), "not an SVG document");
+            Ok(())
+        }
+        Err(RError::Figure { .. }) => Ok(()),
+        Err(e) => Err(format!("unexpected Err({e})")),
+    }
+}
+
+/// A figure drawn both as SVG and as pixels (at a small size): `Ok` or a typed
+/// [`RError::Figure`], the pixel buffer of the figure's size.
+#[cfg(feature = "report")]
+fn drawable(fig: Figure) -> CaseResult {
+    let fig = fig.with_size(320, 240);
+    svg_or_refused(&fig)?;
+    match fig.to_rgb() {
+        Ok(px) => {
+            ensure!(px.len() == 320 * 240 * 3, "{} bytes", px.len());
+            Ok(())
+        }
+        Err(RError::Figure { .. }) => Ok(()),
+        Err(e) => Err(format!("unexpected Err({e})")),
+    }
+}
+
+/// A figure that must draw (finite, ordinary data): SVG and pixels.
+#[cfg(feature = "report")]
+fn draws(fig: Figure) -> CaseResult {
+    let fig = fig.with_size(320, 240);
+    let svg = ok(fig.to_svg())?;
+    ensure!(svg.contains("<svg"), "not an SVG document");
+    let px = ok(fig.to_rgb())?;
+    ensure!(px.len() == 320 * 240 * 3, "{} bytes", px.len());
+    Ok(())
+}
+
+/// One panel of one series `points`, as a figure.
+#[cfg(feature = "report")]
+fn series_figure(points: Vec<(f64, f64)>) -> Figure {
+    Plot2d::new("extreme data", "x", "y")
+        .series("data", points)
+        .figure()
+}
+
+/// The surface `(s, t, s t)`, for the builders and tables of the report.
+#[cfg(feature = "report")]
+fn surface() -> FnSurface<impl Fn(HyperDual64, HyperDual64) -> Vector3<HyperDual64> + Sync> {
+    FnSurface::new(|s: HyperDual64, t: HyperDual64| Vector3::new(s, t, s * t))
+}
+
 // ---------------------------------------------------------------------------------------------
 // The tests
 // ---------------------------------------------------------------------------------------------
 
+mod angular;
 mod bezier;
 mod blending;
 mod bspline;
+mod choice;
 mod domain;
 mod fast_paths;
 mod grid;
 mod hermite;
+mod input;
 mod interp;
 mod mesh;
+mod methods;
 mod metrics;
-mod more;
 mod nurbs;
+#[cfg(feature = "report")]
+mod plot;
+#[cfg(feature = "report")]
 mod report;
 mod seed004;
+mod shapes;
 mod shorthand;
 mod study;
 mod surface;
-mod sweep;
 mod symbolic;
-// the cases of the API added with seed 004 and issue 13 (methods, shapes, curve metrics,
-// point choice, comparison, refit, figures)
-mod new_api;
+#[cfg(feature = "report")]
+mod user;
 
+/// Every case of every area.
 fn all_cases() -> Vec<Case> {
     let mut all = Vec::new();
-    all.extend(domain::cases());
-    all.extend(grid::cases());
-    all.extend(surface::cases());
-    all.extend(hermite::cases());
+    all.extend(angular::cases());
     all.extend(bezier::cases());
-    all.extend(bspline::cases());
-    all.extend(nurbs::cases());
-    all.extend(interp::cases());
-    all.extend(metrics::cases());
-    all.extend(mesh::cases());
-    all.extend(study::cases());
     all.extend(blending::cases());
-    all.extend(report::cases());
-    all.extend(more::cases());
-    all.extend(shorthand::cases());
-    all.extend(sweep::cases());
-    all.extend(seed004::cases());
-    all.extend(symbolic::cases());
+    all.extend(bspline::cases());
+    all.extend(choice::cases());
+    all.extend(domain::cases());
     all.extend(fast_paths::cases());
-    all.extend(new_api::cases());
+    all.extend(grid::cases());
+    all.extend(hermite::cases());
+    all.extend(input::cases());
+    all.extend(interp::cases());
+    all.extend(mesh::cases());
+    all.extend(methods::cases());
+    all.extend(metrics::cases());
+    all.extend(nurbs::cases());
+    #[cfg(feature = "report")]
+    all.extend(plot::cases());
+    #[cfg(feature = "report")]
+    all.extend(report::cases());
+    all.extend(seed004::cases());
+    all.extend(shapes::cases());
+    all.extend(shorthand::cases());
+    all.extend(study::cases());
+    all.extend(surface::cases());
+    all.extend(symbolic::cases());
+    #[cfg(feature = "report")]
+    all.extend(user::cases());
     all
 }
 

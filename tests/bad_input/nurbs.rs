@@ -1,8 +1,18 @@
-//! nurbs
+//! nurbs: NurbsCurve (counts, weights at the ratio limit, points, evaluation), circle7, circle9
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(weight_cases());
+    all.extend(point_and_evaluation_cases());
+    all.extend(circle_cases());
+    all
+}
+
+/// Counts and weights, at the ratio limit included.
+fn weight_cases() -> Vec<Case> {
     vec![
         case("nurbs::point_count_mismatch", || {
             expect_err!(
@@ -86,6 +96,28 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(finite_vecs(&out), "not finite: {out:?}");
             Ok(())
         }),
+        case(
+            "nurbs::weight_ratio_just_above_limit_evaluates_finitely",
+            || {
+                let w = vec![1.0, 2e-280, 1.0, 2e-280, 1.0];
+                let c = ok(nurbs_with(w))?;
+                let ts = linspace(0.0, 1.0, 101);
+                let mut out = Vec::new();
+                c.eval_many(&ts, &mut out);
+                for (t, q) in ts.iter().zip(&out) {
+                    let p = c.point(*t);
+                    ensure!(finite_vecs(&[p, *q]), "t = {t}: {p:?} {q:?}");
+                    ensure!((p - q).amax() <= 1e-12 * 4.0, "t = {t}: {p:?} vs {q:?}");
+                }
+                Ok(())
+            },
+        ),
+    ]
+}
+
+/// Points, `with_weight`, batch and single evaluation, the right end.
+fn point_and_evaluation_cases() -> Vec<Case> {
+    vec![
         case("nurbs::nan_point", || {
             let mut pts = some_points(5);
             pts[3].x = f64::NAN;
@@ -180,6 +212,35 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!((p - last).amax() < 1e-14, "C(1) = {p:?}, expected {last:?}");
             Ok(())
         }),
+        case(
+            "nurbs::right_end_of_unclamped_repeated_end_is_left_limit",
+            || {
+                let b = ok(BSplineBasis::try_new(
+                    ok(KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0]))?,
+                    2,
+                ))?;
+                let pts = vec![v2(0.0, 0.0), v2(1.0, 2.0), v2(3.0, 1.0), v2(7.0, 7.0)];
+                let c = ok(NurbsCurve::try_new(b, pts, vec![1.0, 2.0, 3.0, 4.0]))?;
+                let p = ok(c.try_point(1.0))?;
+                ensure!(
+                    (p - v2(3.0, 1.0)).amax() < 1e-14,
+                    "C(1) = {p:?}, left limit (3, 1)"
+                );
+                let mut out = Vec::new();
+                c.eval_many(&[1.0, 0.0, 1.0], &mut out);
+                ensure!(
+                    out.iter().step_by(2).all(|q| (q - p).amax() < 1e-14),
+                    "batch {out:?}"
+                );
+                Ok(())
+            },
+        ),
+    ]
+}
+
+/// `NurbsCurve::circle7` and `circle9`; NaN, ±inf in every input of the area.
+fn circle_cases() -> Vec<Case> {
+    vec![
         case("nurbs::circle7_bad_radius", || {
             for r in [0.0, -1.0, f64::NAN, f64::INFINITY] {
                 expect_err!(
@@ -267,5 +328,32 @@ pub(super) fn cases() -> Vec<Case> {
                 }
             },
         ),
+        case("nurbs::sweep_non_finite_inputs", || {
+            sweep(5, |bad, k| {
+                expect_err!(
+                    nurbs_with(put(vec![1.0; 5], k, bad)),
+                    Error::NonPositiveWeight { index, .. } if *index == k
+                )?;
+                let mut pts = some_points(5);
+                pts[k][k % 2] = bad;
+                expect_err!(
+                    NurbsCurve::try_new(basis(2, 5)?, pts, vec![1.0; 5]),
+                    Error::NonFinite { .. }
+                )?;
+                let c = ok(nurbs_with(vec![1.0; 5]))?;
+                expect_err!(c.with_weight(k, bad), Error::NonPositiveWeight { .. })?;
+                expect_err!(c.try_point(bad), Error::NonFinite { .. })?;
+                if k < 2 {
+                    let mut centre = v2(0.0, 0.0);
+                    centre[k] = bad;
+                    expect_err!(NurbsCurve::circle7(centre, 1.0), Error::NonFinite { .. })?;
+                    expect_err!(
+                        NurbsCurve::circle9(v2(0.0, 0.0), bad),
+                        Error::NotPositive { .. }
+                    )?;
+                }
+                Ok(())
+            })
+        }),
     ]
 }

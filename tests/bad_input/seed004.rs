@@ -1,8 +1,26 @@
-//! seed 004: Hermite curve, cardinal and Angular splines, guide points
+//! seed 004: Hermite curve, cardinal and Angular splines, guide points, and (feature `report`)
+//! the glyph outlines of the letter "a" (`splinelab::seeds::letters::letter_a`) and the seed-004
+//! figures built on them
 
 use super::*;
+#[cfg(feature = "report")]
+use splinelab::report::seed004::figures;
+#[cfg(feature = "report")]
+use splinelab::seeds::letters::letter_a;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(hermite_and_cardinal_cases());
+    all.extend(angular_cases());
+    all.extend(bspline_order_and_fit_cases());
+    all.extend(shape_method_and_guide_cases());
+    all.extend(letters_cases());
+    all
+}
+
+/// `HermiteCurve` and `CardinalSpline`.
+fn hermite_and_cardinal_cases() -> Vec<Case> {
     vec![
         case("seed004::hermite_curve_one_point", || {
             expect_err!(
@@ -107,6 +125,12 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(finite_vecs(&ok(s.polyline(33))?), "not finite");
             Ok(())
         }),
+    ]
+}
+
+/// `AngularSpline`.
+fn angular_cases() -> Vec<Case> {
+    vec![
         case("seed004::angular_three_points", || {
             expect_err!(
                 AngularSpline::try_new(four_points()[..3].to_vec()),
@@ -234,6 +258,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
+    ]
+}
+
+/// `BSplineCurve::with_order` and `fit_bspline`.
+fn bspline_order_and_fit_cases() -> Vec<Case> {
+    vec![
         case("seed004::bspline_order_one", || {
             expect_err!(
                 BSplineCurve::with_order(four_points(), 1),
@@ -325,6 +355,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooFewPoints { .. } | Error::TooLarge { .. }
             )
         }),
+    ]
+}
+
+/// Shapes, `paper_points`, error messages, `Method::curve`, `guide_point`.
+fn shape_method_and_guide_cases() -> Vec<Case> {
+    vec![
         case("seed004::shape_nan_ratio_reference", || {
             expect_err!(
                 splinelab::Shape::Ellipse { ratio: f64::NAN }.reference(100),
@@ -430,5 +466,83 @@ pub(super) fn cases() -> Vec<Case> {
     ]
 }
 
-// the cases of the API added with seed 004 and issue 13 (methods, shapes, curve metrics,
-// point choice, comparison, refit, figures), in their own file
+#[cfg(not(feature = "report"))]
+fn letters_cases() -> Vec<Case> {
+    Vec::new()
+}
+
+/// The glyph outlines of the letter "a" and the seed-004 figures built on them (feature
+/// `report`).
+#[cfg(feature = "report")]
+fn letters_cases() -> Vec<Case> {
+    vec![
+        case("seed004::unknown_versions", || {
+            for v in [0, 5, usize::MAX] {
+                expect_err!(letter_a(v), Error::IndexOutOfRange { .. })?;
+                expect_err!(
+                    figures::letter(v),
+                    RError::Core(Error::IndexOutOfRange { .. })
+                )?;
+            }
+            Ok(())
+        }),
+        case("seed004::every_version_is_a_valid_target", || {
+            for v in 1..=4 {
+                let l = ok(letter_a(v))?;
+                ensure!(!l.contours.is_empty(), "version {v}: no contour");
+                for c in &l.contours {
+                    ensure!(
+                        c.points.len() >= 3 && finite_vecs(&c.points),
+                        "version {v}: {} points",
+                        c.points.len()
+                    );
+                    ensure!(
+                        c.outline.len() > c.points.len()
+                            && c.outline[0] == c.outline[c.outline.len() - 1],
+                        "version {v}: outline not closed"
+                    );
+                    ensure!(
+                        c.points.iter().all(|p| p.amax() <= 2.0),
+                        "version {v}: beyond the em square"
+                    );
+                    ok(Target::polyline(&c.outline, true, 0.01))
+                        .map_err(|e| format!("version {v}: {e}"))?;
+                }
+            }
+            Ok(())
+        }),
+        case("seed004::every_version_with_the_letter_methods", || {
+            for v in 1..=4 {
+                for c in ok(letter_a(v))?.contours {
+                    for m in [
+                        Method::Angular,
+                        Method::Cardinal { a: 0.8 },
+                        Method::Cubic {
+                            end: CubicEnd::Relaxed,
+                        },
+                    ] {
+                        match m.curve(&c.points, true) {
+                            Ok(curve) => check_curve(&m, &c.points, true, &curve)
+                                .map_err(|e| format!("version {v}: {e}"))?,
+                            // the polygonal letter's collinear triples
+                            Err(Error::NoSmoothPiece { .. }) if m == Method::Angular => {}
+                            Err(e) => {
+                                return Err(format!(
+                                    "version {v}, {}: {e}",
+                                    format_args!("{:?}", m)
+                                ))
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(())
+        }),
+        case("seed004::shape_column_out_of_range", || {
+            for column in [9, usize::MAX] {
+                expect_err!(figures::shape_column(column), RError::UnknownId { .. })?;
+            }
+            Ok(())
+        }),
+    ]
+}

@@ -1,4 +1,5 @@
-//! shorthand
+//! shorthand: the `new`-style shorthands (`Interval::new`, `Rect::new`, `Torus::new`, …) panic
+//! on invalid input as they document (each in a child process)
 
 use super::*;
 

@@ -1,8 +1,18 @@
-//! surface: Torus, Sphere, FnSurface, tabulate, partials_on_grid(_into)
+//! surface: Torus, Sphere, FnSurface, tabulate, partials_on_grid(_into) and its threaded path
 
 use super::*;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(torus_and_sphere_cases());
+    all.extend(tabulate_cases());
+    all.extend(partials_on_grid_cases());
+    all
+}
+
+/// `Torus` and `Sphere`.
+fn torus_and_sphere_cases() -> Vec<Case> {
     vec![
         case(
             "surface::torus_zero_major",
@@ -66,6 +76,19 @@ pub(super) fn cases() -> Vec<Case> {
         case("surface::sphere_radius_1e308", || {
             expect_err!(Sphere::try_new(1e308), Error::CoordinateTooLarge { .. })
         }),
+        case("surface::sweep_non_finite_radii", || {
+            sweep(2, |bad, k| {
+                let r = put(vec![2.0, 1.0], k, bad);
+                expect_err!(Torus::try_new(r[0], r[1]), Error::NotPositive { .. })?;
+                expect_err!(Sphere::try_new(bad), Error::NotPositive { .. })
+            })
+        }),
+    ]
+}
+
+/// `tabulate`.
+fn tabulate_cases() -> Vec<Case> {
+    vec![
         case("surface::tabulate_one_sample", || {
             expect_err!(
                 tabulate(&Torus::default(), &Rect::unit(), 1, 5),
@@ -107,6 +130,34 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::NonFiniteSurface { s, .. } if *s == 2.0
             )
         }),
+        case("surface::exp_surface_overflows_on_large_rect", || {
+            let rect = ok(Rect::try_new(0.0, 1000.0, 0.0, 1000.0))?;
+            expect_err!(
+                tabulate(&ExpSurface, &rect, 3, 3),
+                Error::NonFiniteSurface { .. }
+            )?;
+            expect_err!(
+                HermiteSurface::uniform(&ExpSurface, &rect, 2, 2),
+                Error::NonFiniteSurface { .. } | Error::CoordinateTooLarge { .. }
+            )
+        }),
+        case("surface::sphere_near_limit_tabulates_finitely", || {
+            let sphere = ok(Sphere::try_new(MAX_COORDINATE))?;
+            let g = ok(tabulate(
+                &sphere,
+                &ok(Rect::try_new(0.0, 6.3, -1.6, 1.6))?,
+                9,
+                9,
+            ))?;
+            ensure!(finite_grid(&g), "not finite");
+            Ok(())
+        }),
+    ]
+}
+
+/// `partials_on_grid` and `partials_on_grid_into`, the threaded path included.
+fn partials_on_grid_cases() -> Vec<Case> {
+    vec![
         case("surface::partials_on_grid_nan_at_one_node", || {
             let spot = FnSurface::new(|s: HyperDual64, t: HyperDual64| {
                 let bad = if s.re > 0.4 && s.re < 0.6 && t.re == 0.0 {
@@ -165,6 +216,50 @@ pub(super) fn cases() -> Vec<Case> {
                 partials_on_grid(&Torus::default(), &s, &t),
                 Error::TooLarge { .. }
             )
+        }),
+        case(
+            "surface::partials_on_grid_threaded_first_nan_in_row_major",
+            || {
+                // 200 × 100 nodes take the multi-threaded path; NaN at (s₁₅₀, t₃₀) and later
+                let spot = FnSurface::new(|s: HyperDual64, t: HyperDual64| {
+                    let bad = if s.re >= 150.0 && t.re >= 30.0 {
+                        f64::NAN
+                    } else {
+                        1.0
+                    };
+                    Vector3::new(s * bad, t, s * t)
+                });
+                let s_nodes: Vec<f64> = (0..200).map(f64::from).collect();
+                let t_nodes: Vec<f64> = (0..100).map(f64::from).collect();
+                expect_err!(
+                    partials_on_grid(&spot, &s_nodes, &t_nodes),
+                    Error::NonFiniteSurface { s, t } if *s == 150.0 && *t == 30.0
+                )
+            },
+        ),
+        case("surface::partials_on_grid_threaded_finite", || {
+            let s_nodes = linspace(0.0, 6.0, 200);
+            let t_nodes = linspace(0.0, 6.0, 100);
+            let g = ok(partials_on_grid(&Torus::default(), &s_nodes, &t_nodes))?;
+            ensure!(
+                g.rows() == 200 && g.cols() == 100,
+                "shape {}×{}",
+                g.rows(),
+                g.cols()
+            );
+            let p = g.get(123, 45);
+            let q = Torus::default().partials(s_nodes[123], t_nodes[45]);
+            ensure!(*p == q, "threaded {p:?} vs direct {q:?}");
+            Ok(())
+        }),
+        case("surface::sweep_non_finite_parameters", || {
+            sweep(2, |bad, k| {
+                let st = put(vec![0.3, 0.7], k, bad);
+                expect_err!(
+                    partials_on_grid(&Sphere::default(), &[st[0]], &[st[1]]),
+                    Error::NonFiniteSurface { .. }
+                )
+            })
         }),
     ]
 }

@@ -1,4 +1,5 @@
-//! symbolic
+//! symbolic: the symbolic formulas (`bernstein_formulas`, `bspline_basis_formulas`,
+//! `curve_formulas`, `surface_formulas`) and `trace`
 
 use super::*;
 

@@ -1,8 +1,57 @@
-//! choice: Target, fewest_points and the rest of src/interp/choice/
+//! choice: the automatic point choice (`src/interp/choice/`): `Target`, its placements and
+//! measure, `fewest_points`, `search`, the bounds and the mirror symmetries
 
 use super::*;
+use splinelab::interp::choice::bound::{
+    circle_bound, convex_hull, sampled_circle_bound, segment_bound, widths,
+};
+use splinelab::interp::choice::symmetry::mirrors;
+use splinelab::interp::choice::{
+    fewest_points, max_distinct_for, search, Family, Minimality, MAX_RANDOM_STARTS,
+};
+use splinelab::metrics::curve::SegmentTree;
+use splinelab::seeds::seed004::SHAPES;
+use std::f64::consts::TAU;
 
+/// A choice the search returned: finite points, a finite error, the within-tolerance flag
+/// true to its error, and the error measured again on the target.
+fn check_choice(target: &Target, c: &Choice) -> CaseResult {
+    ensure!(
+        !c.points.is_empty() && finite_vecs(&c.points),
+        "points {:?}",
+        c.points
+    );
+    let h = c.measure.distances.hausdorff();
+    ensure!(h.is_finite(), "error {h}");
+    ensure!(
+        c.within_tolerance == (h <= target.tolerance()),
+        "within_tolerance {} with error {h:e} and tolerance {:e}",
+        c.within_tolerance,
+        target.tolerance()
+    );
+    let again = ok(target.measure(&c.method, &c.points))?;
+    ensure!(
+        (again.distances.hausdorff() - h).abs() <= 1e-12 * target.size(),
+        "measured again: {:e} vs {h:e}",
+        again.distances.hausdorff()
+    );
+    Ok(())
+}
+
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(target_cases());
+    all.extend(placement_and_measure_cases());
+    all.extend(fewest_points_cases());
+    all.extend(fewest_points_known_cases());
+    all.extend(search_cases());
+    all.extend(parameter_bound_and_symmetry_cases());
+    all
+}
+
+/// `Target`: polylines, shapes, tolerances, points on a closed target.
+fn target_cases() -> Vec<Case> {
     vec![
         case("choice::target_tolerance_not_positive", || {
             let p = six_points(1.0);
@@ -114,6 +163,12 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
+    ]
+}
+
+/// `Target::placement`, `feature_placement` and `measure`.
+fn placement_and_measure_cases() -> Vec<Case> {
+    vec![
         case("choice::placement_degenerate_arguments", || {
             let t = ok(rectangle_target(40))?;
             ensure!(t.placement(0, 0.5, 0.0).is_empty(), "closed, no points");
@@ -168,6 +223,12 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(m.distances.hausdorff().is_finite(), "{m:?}");
             Ok(())
         }),
+    ]
+}
+
+/// `fewest_points`: point limits, budgets, a polygon beyond its candidates.
+fn fewest_points_cases() -> Vec<Case> {
+    vec![
         case("choice::fewest_points_max_points_zero", || {
             let t = ok(rectangle_target(40))?;
             for family in [
@@ -275,6 +336,12 @@ pub(super) fn cases() -> Vec<Case> {
             ))?;
             check_choice(&t, &c)
         }),
+    ]
+}
+
+/// `fewest_points` with a known configuration; a tiny target.
+fn fewest_points_known_cases() -> Vec<Case> {
+    vec![
         case("choice::fewest_points_known_with_zero_count", || {
             // a known configuration that claims 0 points: refused, or ignored
             let t = ok(rectangle_target(40))?;
@@ -354,6 +421,12 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             },
         ),
+    ]
+}
+
+/// `search`: random starts, seeds, its evidence, known configurations.
+fn search_cases() -> Vec<Case> {
+    vec![
         risky("choice::search_random_starts_beyond_the_limit", || {
             let t = ok(rectangle_target(40))?;
             for random_starts in [MAX_RANDOM_STARTS + 1, usize::MAX] {
@@ -469,6 +542,13 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
+    ]
+}
+
+/// `Target::parameter_at` and `point_at_parameter`, the bounds, the mirrors, `max_distinct_for`,
+/// `Family::of`.
+fn parameter_bound_and_symmetry_cases() -> Vec<Case> {
+    vec![
         case(
             "choice::parameter_at_and_point_at_parameter_non_finite",
             || {

@@ -1,22 +1,83 @@
-//! seed004api: Method, Interpolant, paper_points and the data helpers
+//! methods: seed 004's methods and point rules: `Method`, `Interpolant`, `paper_points` and the
+//! data helpers (`evenly_spaced`, `decimate`, the coastline, the polygonal "a")
 
 use super::*;
+use splinelab::seeds::seed004::{
+    coastline, decimate, evenly_spaced, paper_points, polygonal_a, COAST_STEP, SHAPES, TABLE_I,
+};
 
+/// Every method, open and closed, through [`six_points`]`(scale)`: an `Ok` curve is checked
+/// ([`check_curve`]); an error is accepted only if `allowed` admits it.
+fn each_method(scale: f64, allowed: fn(&Error) -> bool) -> CaseResult {
+    let points = six_points(scale);
+    for closed in [false, true] {
+        for m in all_methods() {
+            match m.curve(&points, closed) {
+                Ok(c) => check_curve(&m, &points, closed, &c)
+                    .map_err(|e| format!("closed = {closed}: {e}"))?,
+                Err(e) if allowed(&e) => {}
+                Err(e) => {
+                    return Err(format!(
+                        "{} (closed = {closed}) at scale {scale:e}: unexpected Err({e})",
+                        format_args!("{:?}", m)
+                    ))
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Every method, open and closed, on [`six_points`] with one coordinate replaced by `bad`:
+/// the error `expected` admits.
+fn each_method_refuses(bad: f64, expected: fn(&Error) -> bool) -> CaseResult {
+    for closed in [false, true] {
+        for m in all_methods() {
+            for k in 0..12 {
+                let mut points = six_points(1.0);
+                points[k / 2][k % 2] = bad;
+                match m.curve(&points, closed) {
+                    Err(e) if expected(&e) => {}
+                    other => {
+                        return Err(format!(
+                            "{} (closed = {closed}) with {bad:e} at coordinate {k}: {}",
+                            format_args!("{:?}", m),
+                            show(&other)
+                        ))
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(paper_points_cases());
+    all.extend(point_rule_and_data_cases());
+    all.extend(method_cases());
+    all.extend(method_data_cases());
+    all
+}
+
+/// `paper_points`: huge counts, invalid, tiny and huge shapes.
+fn paper_points_cases() -> Vec<Case> {
     vec![
-        risky("seed004api::paper_points_usize_max", || {
+        risky("methods::paper_points_usize_max", || {
             expect_err!(
                 paper_points(&Shape::Circle, &Method::Angular, usize::MAX),
                 Error::TooLarge { got, .. } if *got == usize::MAX
             )
         }),
-        risky("seed004api::paper_points_1_shl_40", || {
+        risky("methods::paper_points_1_shl_40", || {
             expect_err!(
                 paper_points(&Shape::Circle, &Method::Linear, 1 << 40),
                 Error::TooLarge { got, .. } if *got == 1 << 40
             )
         }),
-        risky("seed004api::paper_points_max_elements_plus_one", || {
+        risky("methods::paper_points_max_elements_plus_one", || {
             expect_err!(
                 paper_points(
                     &Shape::Sinusoid { periods: 1.0 },
@@ -27,7 +88,7 @@ pub(super) fn cases() -> Vec<Case> {
             )
         }),
         risky(
-            "seed004api::paper_points_huge_counts_every_method_and_shape",
+            "methods::paper_points_huge_counts_every_method_and_shape",
             || {
                 for (name, shape) in SHAPES {
                     for m in all_methods() {
@@ -42,7 +103,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             },
         ),
-        case("seed004api::paper_points_sweep_non_finite_shape", || {
+        case("methods::paper_points_sweep_non_finite_shape", || {
             for bad in NON_FINITE {
                 for shape in shapes_with(bad) {
                     for m in all_methods() {
@@ -53,7 +114,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::paper_points_zero_and_negative_shape", || {
+        case("methods::paper_points_zero_and_negative_shape", || {
             for bad in [0.0, -0.0, -1.0, -5e-324, f64::MIN] {
                 for shape in shapes_with(bad) {
                     expect_err!(
@@ -65,7 +126,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::paper_points_shape_beyond_bounds", || {
+        case("methods::paper_points_shape_beyond_bounds", || {
             for shape in [
                 Shape::Ellipse { ratio: 1.5 },
                 Shape::Parabola { half_width: 1e300 },
@@ -84,7 +145,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::paper_points_subnormal_and_tiny_shapes", || {
+        case("methods::paper_points_subnormal_and_tiny_shapes", || {
             // valid (positive, within bounds) however small: finite points, or a typed
             // refusal of a derived quantity; every failure is listed
             let mut bad = Vec::new();
@@ -125,7 +186,7 @@ pub(super) fn cases() -> Vec<Case> {
             ensure!(bad.is_empty(), "{}", bad.join("; "));
             Ok(())
         }),
-        case("seed004api::paper_points_huge_shapes_are_finite", || {
+        case("methods::paper_points_huge_shapes_are_finite", || {
             for shape in [
                 Shape::Parabola { half_width: 1e100 },
                 Shape::Hyperbola { b: 1e100 },
@@ -153,19 +214,22 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case(
-            "seed004api::paper_points_bspline_order_zero_and_one",
-            || {
-                for order in [0, 1] {
-                    expect_err!(
-                        paper_points(&Shape::Circle, &Method::BSpline { order }, 6),
-                        Error::DegreeTooLow { .. }
-                    )?;
-                }
-                Ok(())
-            },
-        ),
-        case("seed004api::paper_points_bspline_order_usize_max", || {
+    ]
+}
+
+/// `paper_points` per method and per cell of Table I; the data helpers.
+fn point_rule_and_data_cases() -> Vec<Case> {
+    vec![
+        case("methods::paper_points_bspline_order_zero_and_one", || {
+            for order in [0, 1] {
+                expect_err!(
+                    paper_points(&Shape::Circle, &Method::BSpline { order }, 6),
+                    Error::DegreeTooLow { .. }
+                )?;
+            }
+            Ok(())
+        }),
+        case("methods::paper_points_bspline_order_usize_max", || {
             expect_err!(
                 paper_points(
                     &Shape::Parabola { half_width: 1.0 },
@@ -175,7 +239,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooFewPoints { .. }
             )
         }),
-        case("seed004api::paper_points_every_printed_cell", || {
+        case("methods::paper_points_every_printed_cell", || {
             // the configuration of every cell of Table I: finite points its method draws
             for c in TABLE_I {
                 let (name, shape) = SHAPES[c.column];
@@ -195,7 +259,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::angular_rectangle_points_draw", || {
+        case("methods::angular_rectangle_points_draw", || {
             // the Angular rectangle's rule must give points the Angular spline accepts
             let r = Shape::Rectangle {
                 width: 2.0,
@@ -209,25 +273,25 @@ pub(super) fn cases() -> Vec<Case> {
             Ok(())
         }),
         case(
-            "seed004api::cardinal_points_nan_a_refused_by_the_curve",
+            "methods::cardinal_points_nan_a_refused_by_the_curve",
             || {
                 let m = Method::Cardinal { a: f64::NAN };
                 let set = ok(paper_points(&Shape::Circle, &m, 7))?;
                 expect_err!(m.curve(&set.points, set.closed), Error::Negative { .. })
             },
         ),
-        case("seed004api::evenly_spaced_empty_and_zero", || {
+        case("methods::evenly_spaced_empty_and_zero", || {
             ensure!(evenly_spaced(&[], 5).is_empty(), "from no points");
             ensure!(evenly_spaced(&four_points(), 0).is_empty(), "zero points");
             Ok(())
         }),
-        risky("seed004api::evenly_spaced_usize_max", || {
+        risky("methods::evenly_spaced_usize_max", || {
             let p = four_points();
             let e = evenly_spaced(&p, usize::MAX);
             ensure!(e == p, "{e:?}");
             Ok(())
         }),
-        case("seed004api::evenly_spaced_coast", || {
+        case("methods::evenly_spaced_coast", || {
             let coast = coastline();
             let e = evenly_spaced(&coast, 50);
             ensure!(e.len() == 50 && e[0] == coast[0], "{} points", e.len());
@@ -237,19 +301,19 @@ pub(super) fn cases() -> Vec<Case> {
             );
             Ok(())
         }),
-        case("seed004api::decimate_step_zero_and_empty", || {
+        case("methods::decimate_step_zero_and_empty", || {
             let p = four_points();
             ensure!(decimate(&p, 0) == p, "step 0 keeps every point");
             ensure!(decimate(&[], 3).is_empty(), "no points");
             Ok(())
         }),
-        risky("seed004api::decimate_step_usize_max", || {
+        risky("methods::decimate_step_usize_max", || {
             let p = four_points();
             let d = decimate(&p, usize::MAX);
             ensure!(d == vec![p[0]], "{d:?}");
             Ok(())
         }),
-        case("seed004api::coastline_is_a_valid_ring", || {
+        case("methods::coastline_is_a_valid_ring", || {
             let c = coastline();
             ensure!(c.len() >= 300, "{} points", c.len());
             ensure!(finite_vecs(&c), "not finite");
@@ -261,7 +325,7 @@ pub(super) fn cases() -> Vec<Case> {
             ok(Target::polyline(&c, true, 1.0)).map(drop)
         }),
         case(
-            "seed004api::coastline_decimated_draws_with_every_method",
+            "methods::coastline_decimated_draws_with_every_method",
             || {
                 let d = decimate(&coastline(), COAST_STEP);
                 for m in all_methods() {
@@ -275,7 +339,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Ok(())
             },
         ),
-        case("seed004api::polygonal_a_contours_are_valid_targets", || {
+        case("methods::polygonal_a_contours_are_valid_targets", || {
             let a = polygonal_a();
             ensure!(a.len() == 2, "{} contours", a.len());
             for c in &a {
@@ -286,7 +350,13 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_bspline_order_zero_one_and_huge", || {
+    ]
+}
+
+/// `Method::curve`: orders, the cardinal `a`, too few points.
+fn method_cases() -> Vec<Case> {
+    vec![
+        case("methods::method_bspline_order_zero_one_and_huge", || {
             let p = six_points(1.0);
             for order in [0, 1] {
                 expect_err!(
@@ -299,7 +369,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooFewPoints { .. }
             )
         }),
-        case("seed004api::method_cardinal_a_non_finite_negative", || {
+        case("methods::method_cardinal_a_non_finite_negative", || {
             for a in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -1.0, -5e-324] {
                 for closed in [false, true] {
                     expect_err!(
@@ -311,7 +381,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_cardinal_a_zero_is_the_polygon", || {
+        case("methods::method_cardinal_a_zero_is_the_polygon", || {
             // zero tangents: every piece runs along the side between its two points
             for a in [0.0, -0.0] {
                 for closed in [false, true] {
@@ -323,7 +393,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_cardinal_a_subnormal", || {
+        case("methods::method_cardinal_a_subnormal", || {
             // a positive a however small: the curve tends to the polygon, still interpolating
             for a in [5e-324, 1e-310, 1e-300] {
                 let m = Method::Cardinal { a };
@@ -333,7 +403,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_cardinal_a_huge", || {
+        case("methods::method_cardinal_a_huge", || {
             for a in [1e300, f64::MAX] {
                 let m = Method::Cardinal { a };
                 let p = six_points(1.0);
@@ -351,7 +421,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_empty_and_single_point", || {
+        case("methods::method_empty_and_single_point", || {
             for m in all_methods() {
                 for n in [0, 1] {
                     for closed in [false, true] {
@@ -374,30 +444,37 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_nan_point", || {
+    ]
+}
+
+/// `Method::curve` on non-finite, huge, tiny and repeated points; `Interpolant::breaks`,
+/// `Method::counted_points`.
+fn method_data_cases() -> Vec<Case> {
+    vec![
+        case("methods::method_nan_point", || {
             each_method_refuses(f64::NAN, |e| matches!(e, Error::NonFinite { .. }))
         }),
-        case("seed004api::method_pos_inf_point", || {
+        case("methods::method_pos_inf_point", || {
             each_method_refuses(f64::INFINITY, |e| matches!(e, Error::NonFinite { .. }))
         }),
-        case("seed004api::method_neg_inf_point", || {
+        case("methods::method_neg_inf_point", || {
             each_method_refuses(f64::NEG_INFINITY, |e| matches!(e, Error::NonFinite { .. }))
         }),
-        case("seed004api::method_point_beyond_coordinate_limit", || {
+        case("methods::method_point_beyond_coordinate_limit", || {
             each_method_refuses(2.0 * MAX_COORDINATE, |e| {
                 matches!(e, Error::CoordinateTooLarge { .. })
             })
         }),
-        case("seed004api::method_point_f64_max", || {
+        case("methods::method_point_f64_max", || {
             each_method_refuses(-f64::MAX, |e| matches!(e, Error::CoordinateTooLarge { .. }))
         }),
-        case("seed004api::method_every_family_at_unit_scale", || {
+        case("methods::method_every_family_at_unit_scale", || {
             each_method(1.0, |_| false)
         }),
-        case("seed004api::method_every_family_at_1e-300", || {
+        case("methods::method_every_family_at_1e-300", || {
             each_method(1e-300, |_| false)
         }),
-        case("seed004api::method_every_family_at_subnormal_scale", || {
+        case("methods::method_every_family_at_subnormal_scale", || {
             each_method(1e-310, |e| {
                 matches!(
                     e,
@@ -407,18 +484,15 @@ pub(super) fn cases() -> Vec<Case> {
                 )
             })
         }),
-        case("seed004api::method_every_family_at_1e300", || {
+        case("methods::method_every_family_at_1e300", || {
             each_method(1e300, |_| false)
         }),
-        case(
-            "seed004api::method_every_family_near_coordinate_limit",
-            || {
-                each_method(MAX_COORDINATE / 8.0, |e| {
-                    matches!(e, Error::Overflow { .. } | Error::CoordinateTooLarge { .. })
-                })
-            },
-        ),
-        case("seed004api::method_periodic_needs_three_points", || {
+        case("methods::method_every_family_near_coordinate_limit", || {
+            each_method(MAX_COORDINATE / 8.0, |e| {
+                matches!(e, Error::Overflow { .. } | Error::CoordinateTooLarge { .. })
+            })
+        }),
+        case("methods::method_periodic_needs_three_points", || {
             let two = &six_points(1.0)[..2];
             for end in [CubicEnd::Cyclic, CubicEnd::Anticyclic] {
                 expect_err!(
@@ -428,7 +502,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::method_repeated_points", || {
+        case("methods::method_repeated_points", || {
             // a chord-length parametrization cannot separate equal points; the Angular
             // spline has no chord
             let mut p = six_points(1.0);
@@ -445,7 +519,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("seed004api::interpolant_breaks_cover_the_domain", || {
+        case("methods::interpolant_breaks_cover_the_domain", || {
             let p = six_points(1.0);
             for closed in [false, true] {
                 for m in all_methods() {
@@ -466,7 +540,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        risky("seed004api::counted_points_saturates", || {
+        risky("methods::counted_points_saturates", || {
             for m in all_methods() {
                 ensure!(
                     m.counted_points(usize::MAX, true) == usize::MAX,

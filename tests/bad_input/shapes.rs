@@ -1,8 +1,19 @@
-//! shapes: Shape::validated, reference, point, corners
+//! shapes: the exact test shapes: `Shape::validated`, `reference`, `try_point`, `corners`,
+//! `tolerance`, `bounding_box`
 
 use super::*;
+use splinelab::seeds::seed004::SHAPES;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(validated_cases());
+    all.extend(reference_and_point_cases());
+    all
+}
+
+/// `Shape::validated`.
+fn validated_cases() -> Vec<Case> {
     vec![
         case("shapes::validated_sweep_non_finite", || {
             for bad in NON_FINITE {
@@ -73,6 +84,12 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
+    ]
+}
+
+/// `Shape::reference`, `try_point`, `corners`, `tolerance`, `bounding_box`.
+fn reference_and_point_cases() -> Vec<Case> {
+    vec![
         case("shapes::reference_too_few_samples", || {
             for (_, shape) in SHAPES {
                 for n in [0, 1, 2, 3] {

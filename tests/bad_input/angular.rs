@@ -1,10 +1,24 @@
-//! angular2: the Angular spline's chord-line limits, classify, circumcircle, guides, sampling
+//! angular: the Angular spline's chord-line limits (`AngularSpline::try_new`, `closed`,
+//! `Method::Angular`), `classify`, `circumcircle`, `guide_point`, sampling (`polyline_into`)
+//! and evaluation far outside the domain.
 
 use super::*;
+use splinelab::interp::angular::{circumcircle, classify, PieceKind};
+use std::f64::consts::PI;
 
+/// Every case of this area.
 pub(super) fn cases() -> Vec<Case> {
+    let mut all = Vec::new();
+    all.extend(chord_line_cases());
+    all.extend(classify_and_guide_cases());
+    all.extend(sampling_cases());
+    all
+}
+
+/// The chord-line limits: tangents on a chord, collinear points, closed curves.
+fn chord_line_cases() -> Vec<Case> {
     vec![
-        case("angular2::one_end_tangent_on_the_chord", || {
+        case("angular::one_end_tangent_on_the_chord", || {
             // the tangent at P₁ lies on the chord P₁P₂, the one at P₂ does not: the limit is
             // the chord with a corner at P₂, so no G¹ piece
             let p = vec![v2(0.0, 0.0), v2(1.0, 0.0), v2(2.0, 0.0), v2(3.0, 1.0)];
@@ -14,7 +28,7 @@ pub(super) fn cases() -> Vec<Case> {
             )
         }),
         case(
-            "angular2::one_end_tangent_on_the_chord_at_the_far_end",
+            "angular::one_end_tangent_on_the_chord_at_the_far_end",
             || {
                 let p = vec![v2(0.0, 1.0), v2(1.0, 0.0), v2(2.0, 0.0), v2(3.0, 0.0)];
                 expect_err!(
@@ -24,7 +38,7 @@ pub(super) fn cases() -> Vec<Case> {
             },
         ),
         case(
-            "angular2::one_end_tangent_on_the_chord_through_method",
+            "angular::one_end_tangent_on_the_chord_through_method",
             || {
                 let p = vec![v2(0.0, 0.0), v2(1.0, 0.0), v2(2.0, 0.0), v2(3.0, 1.0)];
                 expect_err!(
@@ -33,7 +47,7 @@ pub(super) fn cases() -> Vec<Case> {
                 )
             },
         ),
-        case("angular2::collinear_points_reverse_direction", || {
+        case("angular::collinear_points_reverse_direction", || {
             // (1,0) → (2,0) with the next point back at (1.5, 0): the tangent at (2,0) points
             // back along the chord
             let p = vec![
@@ -48,14 +62,14 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::NoSmoothPiece { point: 1, .. }
             )
         }),
-        case("angular2::closed_collinear_triangle", || {
+        case("angular::closed_collinear_triangle", || {
             let q = [v2(0.0, 0.0), v2(2.0, 0.0), v2(1.0, 0.0)];
             expect_err!(
                 AngularSpline::closed(&q),
                 Error::NoSmoothPiece { .. } | Error::ReversedPoints { .. }
             )
         }),
-        case("angular2::closed_rectangle_with_side_points", || {
+        case("angular::closed_rectangle_with_side_points", || {
             // the corners with a point in the middle of each side: collinear triples at the
             // side points, next to non-collinear ones at the corners
             let q = [
@@ -70,7 +84,7 @@ pub(super) fn cases() -> Vec<Case> {
             ];
             expect_err!(AngularSpline::closed(&q), Error::NoSmoothPiece { .. })
         }),
-        case("angular2::all_collinear_forward_is_straight", || {
+        case("angular::all_collinear_forward_is_straight", || {
             let p: Vec<Vector2<f64>> = (0..6).map(|i| v2(i as f64, 2.0 * i as f64)).collect();
             let s = ok(AngularSpline::try_new(p.clone()))?;
             ensure!(
@@ -80,7 +94,7 @@ pub(super) fn cases() -> Vec<Case> {
             );
             angular_ok(p)
         }),
-        case("angular2::just_beyond_the_collinear_threshold", || {
+        case("angular::just_beyond_the_collinear_threshold", || {
             // an angle of about 1e-6 from the chord keeps the paper's curve: G¹, interpolating
             angular_ok(vec![
                 v2(0.0, 0.0),
@@ -89,14 +103,20 @@ pub(super) fn cases() -> Vec<Case> {
                 v2(3.0, 1.0),
             ])
         }),
-        case("angular2::classify_non_finite", || {
+    ]
+}
+
+/// `classify`, `circumcircle` and `guide_point`.
+fn classify_and_guide_cases() -> Vec<Case> {
+    vec![
+        case("angular::classify_non_finite", || {
             sweep(2, |bad, k| {
                 let mut a = [0.5, -0.5];
                 a[k] = bad;
                 expect_err!(classify(a[0], a[1]), Error::NonFinite { .. })
             })
         }),
-        case("angular2::classify_chord_limits", || {
+        case("angular::classify_chord_limits", || {
             expect_err!(classify(0.0, -0.5), Error::NoSmoothPiece { point: 0, .. })?;
             expect_err!(classify(0.5, 1e-12), Error::NoSmoothPiece { .. })?;
             expect_err!(classify(PI, PI), Error::NoSmoothPiece { .. })?;
@@ -112,7 +132,7 @@ pub(super) fn cases() -> Vec<Case> {
             );
             Ok(())
         }),
-        case("angular2::classify_the_three_curved_cases", || {
+        case("angular::classify_the_three_curved_cases", || {
             ensure!(classify(0.5, -0.5) == Ok(PieceKind::Standard), "standard");
             ensure!(classify(-0.5, 0.5) == Ok(PieceKind::Reflected), "reflected");
             ensure!(
@@ -125,7 +145,7 @@ pub(super) fn cases() -> Vec<Case> {
             );
             Ok(())
         }),
-        case("angular2::circumcircle_degenerate_is_none", || {
+        case("angular::circumcircle_degenerate_is_none", || {
             let (o, x, y) = (v2(0.0, 0.0), v2(1.0, 0.0), v2(2.0, 0.0));
             ensure!(circumcircle(o, x, y).is_none(), "collinear");
             ensure!(circumcircle(o, o, x).is_none(), "two equal");
@@ -139,7 +159,7 @@ pub(super) fn cases() -> Vec<Case> {
             );
             Ok(())
         }),
-        case("angular2::circumcircle_extreme_scales", || {
+        case("angular::circumcircle_extreme_scales", || {
             for s in [1e-300, 1e-155, 1e150, 1e300, MAX_COORDINATE] {
                 let (a, b, c) = (v2(s, 0.0), v2(0.0, s), v2(-s, 0.0));
                 match circumcircle(a, b, c) {
@@ -154,13 +174,13 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("angular2::guide_point_subnormal_tangent", || {
+        case("angular::guide_point_subnormal_tangent", || {
             // only the direction of the tangent matters
             let g = ok(guide_point(v2(0.0, 0.0), v2(1.0, 1.0), v2(5e-324, 0.0)))?;
             ensure!((g - v2(-1.0, 1.0)).amax() <= 1e-15, "{g:?}");
             Ok(())
         }),
-        case("angular2::guide_point_sweep_non_finite", || {
+        case("angular::guide_point_sweep_non_finite", || {
             sweep(6, |bad, k| {
                 let mut c = [0.0, 0.0, 1.0, 1.0, 1.0, 0.0];
                 c[k] = bad;
@@ -170,7 +190,7 @@ pub(super) fn cases() -> Vec<Case> {
                 )
             })
         }),
-        case("angular2::guide_point_beyond_coordinate_limit", || {
+        case("angular::guide_point_beyond_coordinate_limit", || {
             expect_err!(
                 guide_point(v2(2.0 * MAX_COORDINATE, 0.0), v2(1.0, 1.0), v2(1.0, 0.0)),
                 Error::CoordinateTooLarge { .. }
@@ -180,7 +200,13 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::CoordinateTooLarge { .. }
             )
         }),
-        case("angular2::polyline_into_too_few_samples", || {
+    ]
+}
+
+/// Sampling (`polyline_into`), too many points, evaluation far outside, `eval_piece`.
+fn sampling_cases() -> Vec<Case> {
+    vec![
+        case("angular::polyline_into_too_few_samples", || {
             let s = ok(AngularSpline::try_new(four_points()))?;
             let mut out = vec![v2(9.0, 9.0)];
             for n in [0, 1] {
@@ -188,7 +214,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        risky("angular2::polyline_into_usize_max", || {
+        risky("angular::polyline_into_usize_max", || {
             let s = ok(AngularSpline::try_new(four_points()))?;
             let mut out = Vec::new();
             expect_err!(
@@ -196,7 +222,7 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
-        risky("angular2::polyline_into_max_elements_plus_one", || {
+        risky("angular::polyline_into_max_elements_plus_one", || {
             let s = ok(AngularSpline::try_new(four_points()))?;
             let mut out = Vec::new();
             expect_err!(
@@ -204,13 +230,13 @@ pub(super) fn cases() -> Vec<Case> {
                 Error::TooLarge { .. }
             )
         }),
-        risky("angular2::open_too_many_points", || {
+        risky("angular::open_too_many_points", || {
             expect_err!(
                 AngularSpline::try_new(vec![v2(0.0, 0.0); MAX_ELEMENTS + 1]),
                 Error::TooLarge { .. }
             )
         }),
-        case("angular2::polyline_into_matches_point", || {
+        case("angular::polyline_into_matches_point", || {
             let s = ok(AngularSpline::try_new(six_points(1.0)))?;
             let mut out = Vec::new();
             ok(s.polyline_into(1001, &mut out))?;
@@ -227,7 +253,7 @@ pub(super) fn cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("angular2::evaluation_far_outside_is_finite", || {
+        case("angular::evaluation_far_outside_is_finite", || {
             let s = ok(AngularSpline::try_new(six_points(1.0)))?;
             for t in [-f64::MAX, -1e300, 1e300, f64::MAX, 5e-324, -5e-324] {
                 let p = s.point(t);
@@ -237,7 +263,7 @@ pub(super) fn cases() -> Vec<Case> {
             expect_err!(s.try_point(-1e-300), Error::OutOfDomain { .. })
         }),
         risky(
-            "angular2::eval_piece_out_of_range_panics_as_documented",
+            "angular::eval_piece_out_of_range_panics_as_documented",
             || {
                 let s = ok(AngularSpline::try_new(four_points()))?;
                 expect_panic("eval_piece(1, ·) of a one-piece spline", move || {
