@@ -1,8 +1,9 @@
 //! `splinelab`: regenerate every figure and table of the reports, run the benchmarks, or run
 //! the methods on a user's own data (`fit`, `fewest`, `surface`).
 
-#[path = "cli/user.rs"]
-mod user;
+mod cli;
+
+use cli::user;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};

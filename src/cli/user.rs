@@ -1,5 +1,6 @@
 //! The subcommands on a user's own data: `fit`, `fewest`, `surface`. Each parses its
-//! arguments and calls [`splinelab::report::user`]; no mathematics here.
+//! arguments and calls the library (`splinelab::study::outline`, `splinelab::report::user`); no
+//! mathematics here.
 
 use anyhow::Context;
 use clap::{ArgGroup, Args, ValueEnum};

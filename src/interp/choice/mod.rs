@@ -37,7 +37,7 @@
 //!    between points `j` and `j + 1` to the curve is taken as `cⱼ Δⱼᵖ` (`Δⱼ` the arc between
 //!    them, `p = 2`), and the arcs are rescaled to `Δⱼ ∝ cⱼ^{−1/p}` (damped, a few rounds).
 //! 3. *Compass search* from the best start of each family (and cubic end condition), then
-//!    the next best, up to [`POLISHED_STARTS`] per end condition, on every coordinate
+//!    the next best, up to `POLISHED_STARTS` (5) per end condition, on every coordinate
 //!    (positions, guides, `a`): steps `±h` accepted when they lower the error, `h` halved
 //!    when no step does, within an evaluation budget
 //!    ([`SearchOptions::budget_per_coordinate`]), until one meets the tolerance.
@@ -96,8 +96,7 @@ pub mod symmetry;
 mod target;
 
 pub use count::{fewest_points, max_distinct_for, search};
-pub use starts::{A_STEP, GUIDE_REACH};
-pub use target::{simplified, Target, COARSE_ABOVE, COARSE_FRACTION, CORNER_TURN, MAX_RUN};
+pub use target::{simplified, Target, COARSE_ABOVE, COARSE_FRACTION, MAX_RUN};
 
 use crate::interp::methods::Method;
 use crate::metrics::curve::{Distances, Smoothness};
@@ -107,10 +106,10 @@ use nalgebra::Vector2;
 pub const FINAL_SAMPLES: usize = 256;
 
 /// Samples per piece while searching.
-pub const SEARCH_SAMPLES: usize = 24;
+pub(crate) const SEARCH_SAMPLES: usize = 24;
 
 /// The fraction of the tolerance at which the compass search stops.
-pub const GOAL: f64 = 0.9;
+pub(crate) const GOAL: f64 = 0.9;
 
 /// The most error evaluations one compass search makes, whatever
 /// [`SearchOptions::budget_per_coordinate`] asks.
@@ -119,7 +118,7 @@ pub const MAX_EVALUATIONS: usize = 100_000;
 /// How many starts the compass search polishes per count and layout variant (a cubic end
 /// condition), one after the other until one meets the tolerance: the best of each start
 /// family and variant first.
-pub const POLISHED_STARTS: usize = 5;
+pub(crate) const POLISHED_STARTS: usize = 5;
 
 /// The highest B-spline order tried.
 pub const MAX_ORDER: usize = 12;
@@ -191,7 +190,7 @@ pub enum Start {
 pub enum Family {
     /// The Angular spline.
     Angular,
-    /// The cardinal spline, `a` chosen in `[0.001, 2]` to [`A_STEP`] (or `a = 0`, the polygon,
+    /// The cardinal spline, `a` chosen in `[0.001, 2]` to `A_STEP` (0.001) (or `a = 0`, the polygon,
     /// module docs **Polygon**).
     Cardinal,
     /// The cubic spline, the best of the relaxed, cyclic and anticyclic ends.

@@ -190,7 +190,7 @@ fn arc_errors(
 }
 
 /// Step 3 of the module docs: compass search from `x` (error `e`) within `budget`
-/// evaluations, stopping early at [`GOAL`] of the tolerance (the coarse error a little below
+/// evaluations, stopping early at `GOAL` (0.9) of the tolerance (the coarse error a little below
 /// it, so the dense check passes).
 pub(super) fn compass(
     target: &Target,

@@ -13,7 +13,7 @@ use super::{Family, Start};
 use crate::interp::methods::{CubicEnd, Method};
 use nalgebra::Vector2;
 
-/// The cardinal `a` the search tries: a multiple of [`A_STEP`] in `[A_STEP, 2]`, so the
+/// The cardinal `a` the search tries: a multiple of `A_STEP` (0.001) in `[A_STEP, 2]`, so the
 /// chosen value prints as it is (`a = 1.3`, not `1.2999999999999998`).
 pub(super) fn quantized_a(a: f64) -> f64 {
     let k = (a / A_STEP).round().clamp(1.0, 2.0 / A_STEP);
@@ -22,11 +22,11 @@ pub(super) fn quantized_a(a: f64) -> f64 {
 }
 
 /// The resolution of the cardinal `a` the search chooses.
-pub const A_STEP: f64 = 0.001;
+pub(crate) const A_STEP: f64 = 0.001;
 
 /// How far from its end a guide may be, in target lengths (a parabola's guides one
 /// parameter step beyond the ends are 3.5 lengths away).
-pub const GUIDE_REACH: f64 = 100.0;
+pub(crate) const GUIDE_REACH: f64 = 100.0;
 
 /// A symmetric layout's shape: the mirror, and which axis points carry a point (closed:
 /// `near` at the anchor, `far` half a turn on; open: `near` the middle of the arc).
@@ -137,7 +137,7 @@ impl Layout {
     }
 
     /// The guides of an open guided layout, `None` if they are not finite, on their end, or
-    /// farther from it than [`GUIDE_REACH`] target lengths.
+    /// farther from it than `GUIDE_REACH` (100) target lengths.
     fn guides(&self, target: &Target, x: &[f64]) -> Option<(Vector2<f64>, Vector2<f64>)> {
         let k = self.positions();
         let len = target.length();

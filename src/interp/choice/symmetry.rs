@@ -2,11 +2,11 @@
 //!
 //! **Closed targets.** A mirror axis meets a closed curve at two points half a turn apart,
 //! `P(s₀)` and `P(s₀ + L/2)`, and maps `P(s₀ + δ)` to `P(s₀ − δ)` for every `δ`. Candidate
-//! anchors `s₀` at [`CANDIDATES`] equal steps are scored by the largest
-//! `|R(P(s₀ + δ)) − P(s₀ − δ)|` over [`PROBES`] values of `δ` (`R` the reflection across the
+//! anchors `s₀` at `CANDIDATES` (256) equal steps are scored by the largest
+//! `|R(P(s₀ + δ)) − P(s₀ − δ)|` over `PROBES` (24) values of `δ` (`R` the reflection across the
 //! line through the two axis points), the local minima refined by golden section, and an
-//! anchor kept when its score is at most [`SYMMETRIC`] of the target's size; at most
-//! [`MAX_AXES`] axes, the best first (a circle has them all).
+//! anchor kept when its score is at most `SYMMETRIC` (10⁻⁵) of the target's size; at most
+//! `MAX_AXES` (2) axes, the best first (a circle has them all).
 //!
 //! **Open targets.** The map is `s ↦ L − s` (the ends swap), the isometry either the
 //! reflection across the perpendicular bisector of the ends (the parabola, the hyperbola) or
@@ -29,17 +29,17 @@ pub trait ArcShape {
 }
 
 /// Candidate anchors of a closed target.
-pub const CANDIDATES: usize = 256;
+pub(crate) const CANDIDATES: usize = 256;
 
 /// Values of `δ` probed per anchor.
-pub const PROBES: usize = 24;
+pub(crate) const PROBES: usize = 24;
 
 /// The largest score (a fraction of the target's size) of a symmetry kept: the sagitta of
 /// a 2048-segment reference is far below it, a visible asymmetry far above.
-pub const SYMMETRIC: f64 = 1e-5;
+pub(crate) const SYMMETRIC: f64 = 1e-5;
 
 /// The most axes kept per closed target.
-pub const MAX_AXES: usize = 2;
+pub(crate) const MAX_AXES: usize = 2;
 
 /// A plane isometry of order two.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -27,7 +27,7 @@ pub struct Target {
     size: f64,
     /// `(W, s)` breakpoints of the placement weight with `β = 1`: the normalised turning.
     turning: Vec<(f64, f64)>,
-    /// Arc positions of the corners: vertices turning by more than [`CORNER_TURN`].
+    /// Arc positions of the corners: vertices turning by more than `CORNER_TURN` (30°).
     corners: Vec<f64>,
     /// Inflections of the exact shape (for comparison with a curve's), if known.
     shape_inflections: Option<usize>,
@@ -51,7 +51,7 @@ pub const COARSE_FRACTION: f64 = 1.0 / 64.0;
 
 /// A reference vertex turning by more than this (radians, 30°) is a corner, which the
 /// feature placement puts a point on.
-pub const CORNER_TURN: f64 = std::f64::consts::FRAC_PI_6;
+pub(crate) const CORNER_TURN: f64 = std::f64::consts::FRAC_PI_6;
 
 impl Target {
     /// The target of a dense polyline `points` (a closed one ends where it starts: the first
@@ -398,7 +398,7 @@ impl Target {
         self.equal_steps(Weight::Turning(beta), 0.0, n, phase)
     }
 
-    /// `n` positions with a point on every corner ([`CORNER_TURN`]) and the rest spread
+    /// `n` positions with a point on every corner (`CORNER_TURN` (30°)) and the rest spread
     /// over the arcs between corners — one in each first if there are enough, then in
     /// proportion to the arcs' lengths (largest remainders) — equally spaced within each (on
     /// a polygon: points on the sides, so that three points in a row are collinear); `None`
