@@ -8,7 +8,7 @@ mod common;
 use common::{hausdorff, Rng, EXACT, FD, FD_STEP};
 use nalgebra::{Matrix2, Vector2};
 use num_dual::Dual64;
-use splinelab::interp::angular::{classify, COLLINEAR_SIN};
+use splinelab::interp::{classify, COLLINEAR_SIN};
 use splinelab::{
     guide_point, signed_curvature, AngularSpline, Error, HermiteMidpoint, InflectionRule,
     MirrorMidpoint, ParametricCurve, PieceKind,
@@ -283,12 +283,8 @@ fn corner_triples_have_no_g1_piece_and_are_refused() {
         width: w,
         height: h,
     };
-    let set = splinelab::seeds::seed004::paper_points(
-        &shape,
-        &splinelab::interp::methods::Method::Angular,
-        15,
-    )
-    .unwrap();
+    let set =
+        splinelab::seeds::seed004::paper_points(&shape, &splinelab::Method::Angular, 15).unwrap();
     let spline = AngularSpline::closed(&set.points).expect("rounded corners are G¹");
     assert_eq!(spline.points().len(), 15, "twelve plus three for closure");
     assert_g1(&spline);

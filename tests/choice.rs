@@ -9,12 +9,12 @@ use nalgebra::Vector2;
 use splinelab::interp::choice::{
     fewest_points, search, Family, Minimality, SearchOptions, Target, FINAL_SAMPLES,
 };
-use splinelab::interp::methods::{CubicEnd, Method};
 use splinelab::metrics::curve::sample_pieces;
 use splinelab::seeds::seed004::{paper_points, TABLE_I};
 use splinelab::shapes::Shape;
 use splinelab::study::table_i::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
 use splinelab::Error;
+use splinelab::{CubicEnd, Method};
 
 type V = Vector2<f64>;
 

@@ -234,7 +234,7 @@ fn seed004_sinusoid_half_period_suits_anticyclic_ends() {
     // (Plain sin on [0, π] would not tell them apart: its f″ vanishes at both ends, so the
     // natural spline already satisfies the anticyclic conditions and, by uniqueness, is it.)
     let f = |t: f64| (t + 0.7).sin();
-    let x = splinelab::domain::Interval::new(0.0, std::f64::consts::PI)
+    let x = splinelab::Interval::new(0.0, std::f64::consts::PI)
         .linspace(7)
         .expect("7 ≥ 2");
     let y: Vec<f64> = x.iter().map(|&t| f(t)).collect();

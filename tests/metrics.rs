@@ -229,9 +229,9 @@ fn a_circle_is_smooth_and_a_sine_has_its_inflections() {
     let s = smoothness(&curvature_profile(&sine, &breaks, 40).unwrap(), 1.0);
     assert_eq!(s.inflections, 5);
     // a straight line has no sign at all
-    let flat = splinelab::interp::linear::PiecewiseLinear::curve(
+    let flat = splinelab::PiecewiseLinear::curve(
         &[V::new(0.0, 0.0), V::new(1.0, 1.0)],
-        splinelab::param::Parametrization::Uniform,
+        splinelab::Parametrization::Uniform,
     )
     .unwrap();
     let s = smoothness(&curvature_profile(&flat, &[0.0, 1.0], 9).unwrap(), 1.0);
@@ -247,7 +247,7 @@ fn a_circle_is_smooth_and_a_sine_has_its_inflections() {
 
 #[test]
 fn curvature_jumps_show_at_the_breaks_of_a_g1_curve_and_not_of_a_c2_one() {
-    use splinelab::interp::methods::{CubicEnd, Method};
+    use splinelab::{CubicEnd, Method};
     // eight points of an ellipse: the Angular spline is made of circular arcs (κ constant on
     // each, different from piece to piece), the periodic cubic spline is C²
     let pts: Vec<V> = (0..8)

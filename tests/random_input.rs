@@ -67,18 +67,19 @@ use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::sample::{select, Index};
 use proptest::test_runner::TestCaseError;
-use splinelab::bezier::bernstein::MAX_BERNSTEIN_DEGREE;
-use splinelab::bezier::de_casteljau::MAX_RECURSIVE_POINTS;
+use splinelab::bezier::MAX_BERNSTEIN_DEGREE;
+use splinelab::bezier::MAX_RECURSIVE_POINTS;
 use splinelab::blending::opengl::{opengl_groups, opengl_polyline, LastGroup};
 use splinelab::blending::surface::SlidingBicubic;
 use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
 use splinelab::error::{MAX_COORDINATE, MAX_ELEMENTS};
 use splinelab::interp::collocation::{self, Condition, DerivativeOrder};
-use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition, NodeFamily};
 use splinelab::interp::RESIDUAL_TOLERANCE;
-use splinelab::metrics::surface::ErrorAccumulator;
+use splinelab::interp::{max_interpolation_error, vandermonde_condition};
+use splinelab::metrics::ErrorAccumulator;
 use splinelab::nurbs::MIN_WEIGHT_RATIO;
 use splinelab::tensor::{Net, NET_LIMIT};
+use splinelab::NodeFamily;
 use splinelab::{
     bernstein3, bernstein_all, bernstein_sum, compare, convergence, de_casteljau,
     de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point,

@@ -65,7 +65,7 @@ impl BezierPatch {
     /// | M(4,3) | C(4,4) − C(4,3)/3 |
     /// | M(3,3) | C(4,4) − C(4,3)/3 − C(3,4)/3 + C(3,3)/9 |
     ///
-    /// The report's Codice 7 prints `+ C(3,2)/9` in M(3,2); see [`crate::bezier::codice7`].
+    /// The report's Codice 7 prints `+ C(3,2)/9` in M(3,2); see [`crate::report_codice7_net`].
     pub fn from_hermite(h: &HermitePatch) -> Self {
         let c = h.matrix();
         // columns: convert along s for each t index j

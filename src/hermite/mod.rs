@@ -1,6 +1,6 @@
 //! Bicubic Hermite interpolation of surfaces (seed 000 §1–3, §5–6).
 
-pub mod basis;
-pub mod curve;
-pub mod patch;
-pub mod spline_surface;
+pub(crate) mod basis;
+pub(crate) mod curve;
+pub(crate) mod patch;
+pub(crate) mod spline_surface;

@@ -1,15 +1,20 @@
 //! Interpolation: polynomial (power basis, Lagrange), piecewise linear, cubic splines with
 //! four end conditions, B-spline collocation (seeds 001 and 004); the parameters of the points
-//! are [`crate::param`].
+//! are [`crate::Parametrization`].
 
-pub mod angular;
-pub mod cardinal;
+pub(crate) mod angular;
+pub(crate) mod cardinal;
 pub mod choice;
 pub mod collocation;
-pub mod cubic;
-pub mod linear;
-pub mod methods;
-pub mod polynomial;
+pub(crate) mod cubic;
+pub(crate) mod linear;
+pub(crate) mod methods;
+pub(crate) mod polynomial;
+
+pub use angular::{classify, COLLINEAR_SIN};
+pub use cubic::PERIODIC_MATCH;
+pub use methods::ring;
+pub use polynomial::{max_interpolation_error, vandermonde_condition, RUNGE_INTERVAL};
 
 use crate::error::{Error, Result};
 use nalgebra::SVector;

@@ -22,7 +22,7 @@ pub enum PatchEvaluation {
     /// The correct Bézier net ([`BezierPatch::from_hermite`]) by de Casteljau.
     DeCasteljau,
     /// The report's printed path: the net of Codice 7 as printed
-    /// ([`crate::bezier::codice7`], sign error included), tabulated by de Casteljau
+    /// ([`crate::report_codice7_net`], sign error included), tabulated by de Casteljau
     /// (Codice 11–12) as Codice 14 does.
     ReportListing,
 }

@@ -3,7 +3,8 @@
 //! and evaluation far outside the domain.
 
 use super::*;
-use splinelab::interp::angular::{circumcircle, classify, PieceKind};
+use splinelab::interp::classify;
+use splinelab::{circumcircle, PieceKind};
 use std::f64::consts::PI;
 
 /// Every case of this area.

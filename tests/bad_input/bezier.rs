@@ -34,7 +34,7 @@ fn bernstein_cases() -> Vec<Case> {
             expect_err!(bernstein_all(usize::MAX, 0.5_f64), Error::TooLarge { .. })
         }),
         risky("bezier::bernstein_all_above_max_degree", || {
-            let n = splinelab::bezier::bernstein::MAX_BERNSTEIN_DEGREE + 1;
+            let n = splinelab::bezier::MAX_BERNSTEIN_DEGREE + 1;
             expect_err!(bernstein_all(n, 0.5_f64), Error::TooLarge { .. })
         }),
         case("bezier::bernstein_sum_empty", || {

@@ -71,10 +71,10 @@ use splinelab::interp::choice::{Choice, Measure, SearchOptions, Target};
 use splinelab::interp::collocation::{
     self, interpolate_curve, schoenberg_whitney, Condition, DerivativeOrder,
 };
-use splinelab::interp::polynomial::{max_interpolation_error, vandermonde_condition};
 use splinelab::interp::RESIDUAL_TOLERANCE;
+use splinelab::interp::{max_interpolation_error, vandermonde_condition};
 use splinelab::metrics::curve::{Distances, Smoothness};
-use splinelab::metrics::surface::ErrorAccumulator;
+use splinelab::metrics::ErrorAccumulator;
 #[cfg(feature = "report")]
 use splinelab::report::{draw::Plot2d, figure::Figure, Error as RError};
 use splinelab::shapes::Shape;
