@@ -35,7 +35,7 @@ fn main() -> std::result::Result<(), splinelab::report::Error> {
     table::seam_continuity(&spline, 11)?.write(dir)?;
     draw::error_map(&torus, &spline, 81)?.save(dir, "error-map")?;
     // 06: a convergence study of one's own surface
-    let rows = splinelab::convergence(&mine, &rect, &[1, 2, 4, 8, 16], 15)?;
+    let rows = splinelab::study::hermite_error::convergence(&mine, &rect, &[1, 2, 4, 8, 16], 15)?;
     draw::convergence(&rows, "my convergence study").save(dir, "convergence")?;
     // 07: knots, degree, control points and weights of one's own
     let basis = BSplineBasis::try_new(

@@ -1,36 +1,5 @@
-//! The crate's one error type, and the policy on what is checked.
-//!
-//! # What a value of this crate guarantees
-//!
-//! - **Constructors validate what they are given and what they derive.** Inputs must be
-//!   finite and well formed (sorted, distinct, positive where the mathematics needs it), and so
-//!   must every quantity derived from them that the object relies on: interval widths, knot
-//!   gaps and their reciprocals, chord lengths and their sums, nodes of a uniform partition,
-//!   corner data of a surface, polynomial coefficients, NURBS weight ratios. A failure is a
-//!   typed [`Error`](enum@Error) that names the real cause.
-//! - **An `Ok` value is finite and satisfies its defining property**: an interpolant
-//!   reproduces its data (routes that solve a possibly ill-conditioned system check their
-//!   residual and return [`Error::IllConditioned`] when `f64` cannot deliver it; the cubic
-//!   spline's moment form interpolates exactly), a basis sums to one, a partition strictly
-//!   increases.
-//! - **Evaluation of a validated object at a finite parameter in its domain is finite** and
-//!   does not fail. (Polynomial interpolants are the one bounded exception: between its
-//!   nodes an interpolant of degree `n` can exceed its data by its Lebesgue constant, up to
-//!   about `2ⁿ` for equispaced nodes, so it is finite wherever its true value is below
-//!   `f64::MAX`.) Derivatives are exact to rounding (dual numbers, or the derivative
-//!   recurrence of *The NURBS Book* A2.3 where knots nearly coincide), finite wherever their
-//!   true value is representable. Outside the domain, curves extrapolate their end pieces.
-//! - **The domain's right end is the left limit**: a piecewise object evaluated at the last
-//!   point of its domain gives the limit from the left of its last non-empty piece (B-spline
-//!   spans, partitions, cubic-spline pieces), at every derivative order. Interior breakpoints
-//!   belong to the piece on their right.
-//! - **Sizes are limited**: a count of elements to allocate (samples, nodes, patches, grid
-//!   cells, control points of a printed recursive procedure) above [`MAX_ELEMENTS`], or whose
-//!   arithmetic overflows `usize`, is [`Error::TooLarge`]; no allocation is attempted. No
-//!   routine recurses to a depth that grows with its input beyond a stated limit, and every
-//!   iterative routine (the SVD of the report's norm) has a bounded number of iterations.
-//! - **No panic, hang or abort** on any input through the `try_*` and `Result` APIs; the
-//!   `new`-style shorthands document the panics they turn errors into.
+//! The crate's one error type ([`Error`], with the policy on what is checked), its limits
+//! ([`MAX_ELEMENTS`], [`MAX_COORDINATE`]) and the checks every routine shares.
 
 use thiserror::Error;
 
@@ -51,7 +20,39 @@ pub const MAX_COORDINATE: f64 = f64::MAX / 64.0;
 /// Everything that can go wrong when building or evaluating splinelab objects.
 ///
 /// Construction and tabulation return `Result<_, Error>`; evaluation of an object that was
-/// validated on construction does not fail (see the [module docs](self) for the policy).
+/// validated on construction does not fail.
+///
+/// # What a value of this crate guarantees
+///
+/// - **Constructors validate what they are given and what they derive.** Inputs must be
+///   finite and well formed (sorted, distinct, positive where the mathematics needs it), and so
+///   must every quantity derived from them that the object relies on: interval widths, knot
+///   gaps and their reciprocals, chord lengths and their sums, nodes of a uniform partition,
+///   corner data of a surface, polynomial coefficients, NURBS weight ratios. A failure is a
+///   typed [`Error`](enum@Error) that names the real cause.
+/// - **An `Ok` value is finite and satisfies its defining property**: an interpolant
+///   reproduces its data (routes that solve a possibly ill-conditioned system check their
+///   residual and return [`Error::IllConditioned`] when `f64` cannot deliver it; the cubic
+///   spline's moment form interpolates exactly), a basis sums to one, a partition strictly
+///   increases.
+/// - **Evaluation of a validated object at a finite parameter in its domain is finite** and
+///   does not fail. (Polynomial interpolants are the one bounded exception: between its
+///   nodes an interpolant of degree `n` can exceed its data by its Lebesgue constant, up to
+///   about `2ⁿ` for equispaced nodes, so it is finite wherever its true value is below
+///   `f64::MAX`.) Derivatives are exact to rounding (dual numbers, or the derivative
+///   recurrence of *The NURBS Book* A2.3 where knots nearly coincide), finite wherever their
+///   true value is representable. Outside the domain, curves extrapolate their end pieces.
+/// - **The domain's right end is the left limit**: a piecewise object evaluated at the last
+///   point of its domain gives the limit from the left of its last non-empty piece (B-spline
+///   spans, partitions, cubic-spline pieces), at every derivative order. Interior breakpoints
+///   belong to the piece on their right.
+/// - **Sizes are limited**: a count of elements to allocate (samples, nodes, patches, grid
+///   cells, control points of a printed recursive procedure) above [`MAX_ELEMENTS`], or whose
+///   arithmetic overflows `usize`, is [`Error::TooLarge`]; no allocation is attempted. No
+///   routine recurses to a depth that grows with its input beyond a stated limit, and every
+///   iterative routine (the SVD of the report's norm) has a bounded number of iterations.
+/// - **No panic, hang or abort** on any input through the `try_*` and `Result` APIs; the
+///   `new`-style shorthands document the panics they turn errors into.
 ///
 /// `Debug` prints the same message as `Display`, so an `.expect(…)`, a `?` in a notebook cell
 /// or an `unwrap` shows what went wrong in words, not a dump of the variant's fields.

@@ -72,7 +72,7 @@ mod branch;
 pub mod bspline;
 pub(crate) mod curve;
 pub(crate) mod domain;
-pub mod error;
+pub(crate) mod error;
 pub(crate) mod grid;
 pub mod hermite;
 mod horner;
@@ -80,9 +80,9 @@ pub mod input;
 pub mod interp;
 mod lanes;
 mod memory;
-pub mod mesh;
+pub(crate) mod mesh;
 pub mod metrics;
-pub mod nurbs;
+pub(crate) mod nurbs;
 mod parallel;
 pub(crate) mod param;
 pub mod prelude;
@@ -90,7 +90,7 @@ mod printed;
 #[cfg(feature = "report")]
 pub mod report;
 pub mod seeds;
-pub mod shapes;
+pub(crate) mod shapes;
 pub mod study;
 pub(crate) mod surface;
 pub mod symbolic;
@@ -110,7 +110,7 @@ pub use bspline::fit::{fit_bspline, BSplineFit};
 pub use bspline::knots::{EndKnots, KnotVector};
 pub use curve::{signed_curvature, ParametricCurve};
 pub use domain::{Interval, Partition, Rect, Span};
-pub use error::{Error, Result};
+pub use error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
 pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::curve::HermiteCurve;
@@ -125,15 +125,11 @@ pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;
 pub use interp::methods::{CubicEnd, Interpolant, Method};
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
-pub use mesh::Mesh;
+pub use mesh::{Mesh, PARALLEL_TANGENTS};
 pub use metrics::surface::{compare, matlab_norm, CoordErrors};
-pub use nurbs::NurbsCurve;
+pub use nurbs::{NurbsCurve, MIN_WEIGHT_RATIO};
 pub use param::Parametrization;
-pub use shapes::Shape;
-pub use study::hermite_error::{
-    convergence, spline_errors, uniform_spline_errors, ConvergenceOrders, ConvergenceRow,
-    PatchEvaluation,
-};
+pub use shapes::{Shape, TOLERANCE_FRACTION};
 pub use surface::{
     partials_on_grid, partials_on_grid_into, tabulate, ExpSurface, FnSurface, ParametricSurface,
     Partials, Sphere, SurfaceDerivatives, SurfaceFn, Torus,

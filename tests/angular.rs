@@ -279,7 +279,7 @@ fn corner_triples_have_no_g1_piece_and_are_refused() {
     ));
     // the rounded corners of the paper's configuration (a point on either side and the
     // midpoint of the quarter circle tangent there) are G¹ and close to the rectangle
-    let shape = splinelab::shapes::Shape::Rectangle {
+    let shape = splinelab::Shape::Rectangle {
         width: w,
         height: h,
     };

@@ -11,9 +11,9 @@ use splinelab::interp::choice::{
 };
 use splinelab::metrics::curve::sample_pieces;
 use splinelab::seeds::seed004::{paper_points, TABLE_I};
-use splinelab::shapes::Shape;
 use splinelab::study::table_i::{study_cell, table_i, Verdict, REFERENCE_SEGMENTS};
 use splinelab::Error;
+use splinelab::Shape;
 use splinelab::{CubicEnd, Method};
 
 type V = Vector2<f64>;

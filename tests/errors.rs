@@ -1,8 +1,8 @@
 //! Bad input gets a typed error, never a panic: one test per case.
 
+use splinelab::study::hermite_error::{uniform_spline_errors, PatchEvaluation};
 use splinelab::{
-    de_casteljau, tabulate, uniform_spline_errors, Error, HermitePatch, HermiteSurface, Interval,
-    Partition, PatchEvaluation, Rect, Torus,
+    de_casteljau, tabulate, Error, HermitePatch, HermiteSurface, Interval, Partition, Rect, Torus,
 };
 
 #[test]

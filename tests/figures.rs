@@ -13,8 +13,9 @@ use splinelab::report::plot2d::{Figure2d, Panel, Series, Style};
 use splinelab::report::render3d::{Figure3d, Marker, Scene, View};
 use splinelab::report::style::FIGURE_SIZE;
 use splinelab::report::{self, Error};
+use splinelab::study::hermite_error::convergence;
 use splinelab::{
-    convergence, BSplineBasis, BSplineCurve, FnSurface, HermiteSurface, KnotVector, Partition, Rect,
+    BSplineBasis, BSplineCurve, FnSurface, HermiteSurface, KnotVector, Partition, Rect,
 };
 
 /// Minimum share of coloured pixels. Axes, grid panels, text and background are grey, black

@@ -14,7 +14,7 @@ use splinelab::metrics::curve::{
     curvature_profile, polyline_distances, sample_pieces, segment_distance, smoothness,
     SegmentTree, FLAT,
 };
-use splinelab::shapes::Shape;
+use splinelab::Shape;
 use splinelab::{Error, ParametricCurve};
 use std::f64::consts::{PI, TAU};
 

@@ -72,25 +72,27 @@ use splinelab::bezier::MAX_RECURSIVE_POINTS;
 use splinelab::blending::opengl::{opengl_groups, opengl_polyline, LastGroup};
 use splinelab::blending::surface::SlidingBicubic;
 use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
-use splinelab::error::{MAX_COORDINATE, MAX_ELEMENTS};
 use splinelab::interp::collocation::{self, Condition, DerivativeOrder};
 use splinelab::interp::RESIDUAL_TOLERANCE;
 use splinelab::interp::{max_interpolation_error, vandermonde_condition};
 use splinelab::metrics::ErrorAccumulator;
-use splinelab::nurbs::MIN_WEIGHT_RATIO;
+use splinelab::study::hermite_error::{
+    convergence, spline_errors, uniform_spline_errors, PatchEvaluation,
+};
 use splinelab::tensor::{Net, NET_LIMIT};
 use splinelab::NodeFamily;
+use splinelab::MIN_WEIGHT_RATIO;
 use splinelab::{
-    bernstein3, bernstein_all, bernstein_sum, compare, convergence, de_casteljau,
-    de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point,
-    hermite_basis, lagrange4, matlab_norm, partials_on_grid, partials_on_grid_into,
-    printed_setbval, report_codice7_net, runge, spline_errors, tabulate, uniform_bspline4,
-    uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending,
-    CardinalSpline, CubicSpline, EndCondition, EndKnots, ExpSurface, FnSurface, Grid, HermitePatch,
-    HermiteSurface, Interval, KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve,
-    Parametrization, Partials, Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect,
-    Sphere, SurfaceDerivatives, Torus,
+    bernstein3, bernstein_all, bernstein_sum, compare, de_casteljau, de_casteljau_levels,
+    de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point, hermite_basis,
+    lagrange4, matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval,
+    report_codice7_net, runge, tabulate, uniform_bspline4, AngularSpline, BSplineBasis,
+    BSplineCurve, BezierPatch, Blending, CardinalSpline, CubicSpline, EndCondition, EndKnots,
+    ExpSurface, FnSurface, Grid, HermitePatch, HermiteSurface, Interval, KnotVector, Lagrange,
+    Mesh, NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PiecewiseLinear,
+    PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
 };
+use splinelab::{MAX_COORDINATE, MAX_ELEMENTS};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;

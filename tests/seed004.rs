@@ -7,7 +7,7 @@ mod common;
 use common::{EXACT, FD, FD_STEP};
 use nalgebra::Vector2;
 use splinelab::seeds::seed004::{self, paper_points, TABLE_I};
-use splinelab::shapes::TOLERANCE_FRACTION;
+use splinelab::TOLERANCE_FRACTION;
 use splinelab::{CubicEnd, Error, Method, ParametricCurve, Shape};
 
 #[test]

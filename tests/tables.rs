@@ -7,7 +7,8 @@
 use splinelab::report::seed000::tables;
 use splinelab::seeds::seed000::{agrees_to_printed, T3, T6};
 use splinelab::study::hermite_error::REPORT_PREC;
-use splinelab::{convergence, uniform_spline_errors, PatchEvaluation, Rect, Torus};
+use splinelab::study::hermite_error::{convergence, uniform_spline_errors, PatchEvaluation};
+use splinelab::{Rect, Torus};
 
 fn errors(side: f64, n: usize, m: usize, eval: PatchEvaluation) -> [f64; 3] {
     let rect = Rect::square(0.0, side).expect("valid");

@@ -25,7 +25,7 @@
 //! let square = [Contour { points, closed: true }];
 //! let found = fewest(&square, Tolerance::Fraction(0.01), &[Family::Linear], &SearchOptions::default(), &|_| {})?;
 //! assert_eq!(found.methods[0].counted(), 5); // the corners, the first repeated
-//! # Ok::<(), splinelab::error::Error>(())
+//! # Ok::<(), splinelab::Error>(())
 //! ```
 
 use crate::error::{positive, Error, Result};

@@ -64,7 +64,7 @@ fn batch_cases() -> Vec<Case> {
             let pts: Vec<Vector2<f64>> = (0..14)
                 .map(|i| {
                     let s = if i % 2 == 0 { 1.0 } else { -1.0 };
-                    v2(s * splinelab::error::MAX_COORDINATE, 0.0)
+                    v2(s * splinelab::MAX_COORDINATE, 0.0)
                 })
                 .collect();
             let c = BSplineCurve::try_new(basis, pts).expect("finite points");
@@ -75,7 +75,7 @@ fn batch_cases() -> Vec<Case> {
                 let r = c.point(t);
                 ensure!(o.iter().all(|v| v.is_finite()), "not finite at {t}: {o:?}");
                 ensure!(
-                    (o - r).amax() <= 1e-12 * splinelab::error::MAX_COORDINATE,
+                    (o - r).amax() <= 1e-12 * splinelab::MAX_COORDINATE,
                     "{o:?} vs {r:?}"
                 );
             }

@@ -66,7 +66,6 @@ use num_dual::{DualNum, HyperDual64};
 use splinelab::blending::opengl::{opengl_groups, opengl_polyline, LastGroup};
 use splinelab::blending::surface::SlidingBicubic;
 use splinelab::blending::window::{printed_bspline_polyline, WindowCurve};
-use splinelab::error::{MAX_COORDINATE, MAX_ELEMENTS};
 use splinelab::interp::choice::{Choice, Measure, SearchOptions, Target};
 use splinelab::interp::collocation::{
     self, interpolate_curve, schoenberg_whitney, Condition, DerivativeOrder,
@@ -77,19 +76,22 @@ use splinelab::metrics::curve::{Distances, Smoothness};
 use splinelab::metrics::ErrorAccumulator;
 #[cfg(feature = "report")]
 use splinelab::report::{draw::Plot2d, figure::Figure, Error as RError};
-use splinelab::shapes::Shape;
-use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
-use splinelab::{
-    bernstein_all, bernstein_sum, compare, convergence, de_casteljau, de_casteljau_levels,
-    de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point, hermite_basis,
-    matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, runge, spline_errors,
-    tabulate, uniform_spline_errors, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch,
-    Blending, CardinalSpline, CubicEnd, CubicSpline, EndCondition, EndKnots, Error, ExpSurface,
-    FnSurface, Grid, HermiteCurve, HermitePatch, HermiteSurface, Interpolant, Interval, KnotVector,
-    Lagrange, Method, NodeFamily, NurbsCurve, ParametricCurve, Parametrization, Partials,
-    Partition, PatchEvaluation, PiecewiseLinear, PowerPolynomial, Rect, Sphere, SurfaceDerivatives,
-    Torus,
+use splinelab::study::hermite_error::{
+    convergence, spline_errors, uniform_spline_errors, PatchEvaluation,
 };
+use splinelab::tensor::{Net, HERMITE_LIMIT, NET_LIMIT};
+use splinelab::Shape;
+use splinelab::{
+    bernstein_all, bernstein_sum, compare, de_casteljau, de_casteljau_levels,
+    de_casteljau_recursive, de_casteljau_surface, fit_bspline, guide_point, hermite_basis,
+    matlab_norm, partials_on_grid, partials_on_grid_into, printed_setbval, runge, tabulate,
+    AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, Blending, CardinalSpline, CubicEnd,
+    CubicSpline, EndCondition, EndKnots, Error, ExpSurface, FnSurface, Grid, HermiteCurve,
+    HermitePatch, HermiteSurface, Interpolant, Interval, KnotVector, Lagrange, Method, NodeFamily,
+    NurbsCurve, ParametricCurve, Parametrization, Partials, Partition, PiecewiseLinear,
+    PowerPolynomial, Rect, Sphere, SurfaceDerivatives, Torus,
+};
+use splinelab::{MAX_COORDINATE, MAX_ELEMENTS};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};

@@ -353,19 +353,19 @@ fn plane_figure_cases() -> Vec<Case> {
                 rms: v3(v, v, v),
             };
             let rows = vec![
-                splinelab::ConvergenceRow {
+                splinelab::study::hermite_error::ConvergenceRow {
                     n: 0,
                     h: f64::NAN,
                     errors: e(f64::INFINITY),
                     order: None,
                 },
-                splinelab::ConvergenceRow {
+                splinelab::study::hermite_error::ConvergenceRow {
                     n: usize::MAX,
                     h: 0.0,
                     errors: e(5e-324),
                     order: None,
                 },
-                splinelab::ConvergenceRow {
+                splinelab::study::hermite_error::ConvergenceRow {
                     n: 1,
                     h: f64::MAX,
                     errors: e(f64::MAX),
