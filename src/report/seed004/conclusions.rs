@@ -573,6 +573,6 @@ pub fn conclusions_of(cells: &[CellStudy], fewest: &[FigureStudy]) -> Result<Tab
         "Seed 004: the paper's conclusions beside the evidence of our runs",
         frame_of(id, &rows)?,
     )
-    .note("Claims in the paper's words (spec §6). Evidence: the automatic counts of table-i (tolerance 1 %), the cross-method table table-i-cross (within 1 % / absurd beyond 5 %), a locality measurement (comparison::pieces_changed: 12 points of the ellipse 0.4, closed, the seventh moved by (0.02, 0.02)), and table-seed004-fewest. Verdicts: supported / contradicted / mixed by the thresholds in report::seed004::table_i::conclusions; the paper judged by eye and ease of use as well, which no number here measures.")
+    .note("Claims in the paper's words (spec §6). Evidence: the automatic counts of table-i (tolerance 1 %), the cross-method table table-i-cross (within 1 % / absurd beyond 5 %), a locality measurement (study::table_i::pieces_changed: 12 points of the ellipse 0.4, closed, the seventh moved by (0.02, 0.02)), and table-seed004-fewest. Verdicts: supported / contradicted / mixed by the thresholds in report::seed004::conclusions; the paper judged by eye and ease of use as well, which no number here measures.")
     .note("Locality: the cardinal spline with Clark's tangents has the same 4-point support as the Angular spline, and a B-spline of order k < n + 1 changes k pieces; only the cubic spline is global (spec A13)."))
 }
