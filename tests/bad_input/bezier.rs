@@ -9,6 +9,7 @@ pub(super) fn cases() -> Vec<Case> {
     all.extend(bernstein_cases());
     all.extend(de_casteljau_cases());
     all.extend(patch_cases());
+    all.extend(from_curve_cases());
     all
 }
 
@@ -254,6 +255,25 @@ fn patch_cases() -> Vec<Case> {
                 m[k / 12][(k / 3) % 4][k % 3] = bad;
                 expect_err!(BezierPatch::try_from_net(m), Error::NonFinite { .. })
             })
+        }),
+    ]
+}
+
+/// A curve's cubic Bézier segments (`bezier::from_curve`).
+fn from_curve_cases() -> Vec<Case> {
+    vec![
+        case("bezier::from_curve_bad_tolerances", || {
+            use splinelab::bezier::from_curve::cubic_segments;
+            let c = ok(CardinalSpline::try_new(some_points(5), 0.5))?;
+            for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                expect_err!(cubic_segments(&c, bad), Error::NotPositive { .. })?;
+            }
+            Ok(())
+        }),
+        case("bezier::from_curve_below_rounding", || {
+            use splinelab::bezier::from_curve::cubic_segments;
+            let circle = ok(NurbsCurve::circle9(v2(0.0, 0.0), 1e6))?;
+            expect_err!(cubic_segments(&circle, 5e-324), Error::NoConvergence { .. })
         }),
     ]
 }

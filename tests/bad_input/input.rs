@@ -1,5 +1,5 @@
-//! input: points from CSV and contours from SVG paths (issue 29), and (feature `report`) glyph
-//! outlines from a font
+//! input: points from CSV and contours from SVG paths (issue 29), and (feature `report`) SVG
+//! documents and glyph outlines from a font
 
 use super::*;
 
@@ -8,6 +8,7 @@ pub(super) fn cases() -> Vec<Case> {
     let mut all = Vec::new();
     all.extend(text_cases());
     all.extend(font_cases());
+    all.extend(svg_document_cases());
     all
 }
 
@@ -129,6 +130,71 @@ fn font_cases() -> Vec<Case> {
             (&font[..100], 'a'),
         ] {
             expect_err!(glyph(bytes, ch), Error::Glyph { .. })?;
+        }
+        Ok(())
+    })]
+}
+
+#[cfg(not(feature = "report"))]
+fn svg_document_cases() -> Vec<Case> {
+    Vec::new()
+}
+
+/// SVG documents refused with words that say why (feature `svg`, which `report` implies).
+#[cfg(feature = "report")]
+fn svg_document_cases() -> Vec<Case> {
+    vec![case("input::svg_documents", || {
+        use splinelab::input::contours_from_svg_document;
+        const NS: &str = "xmlns='http://www.w3.org/2000/svg'";
+        // (document, words its refusal says)
+        let docs: Vec<(String, &str)> = vec![
+                ("".into(), "not well-formed XML"),
+                ("<".into(), "not well-formed XML"),
+                ("<path d='".into(), "not well-formed XML"),
+                ("<!-- <path d='M 0 0 L 1 1'/>".into(), "not well-formed XML"),
+                ("<svg><path d='M 0 0 L 1 1'/></svg>".into(), "not SVG's <svg>"),
+                (format!("<svg {NS}/>"), "draws nothing"),
+                (format!("<svg {NS}><path/></svg>"), "draws nothing"),
+                (format!("<svg {NS}><path d=M0,0/></svg>"), "not well-formed XML"),
+                (format!("<svg {NS}><path d='M 0 0 S 1 1 2'/></svg>"), "S is short"),
+                (format!("<svg {NS}><path d='M 0 0 A 1 1 0 1e0 1 2 2'/></svg>"), "cannot read 'e'"),
+                (format!("<svg {NS}><path d='Z'/></svg>"), "starts with a move"),
+                (format!("<svg {NS}><path d=\"M 0 0 L 1e400 0\"/></svg>"), "not a finite"),
+                (format!("<svg {NS}><text>a</text><rect width='1' height='1'/></svg>"), "<text>"),
+                (format!("<svg {NS}><image width='1' height='1'/></svg>"), "<image>"),
+                (format!("<svg {NS}><foreignObject/></svg>"), "<foreignObject>"),
+                (format!("<svg {NS}><use href='icons.svg#home'/><rect width='1' height='1'/></svg>"), "another file"),
+                (format!("<svg {NS}><rect width='1' height='1' transform='rotate(30'/></svg>"), "transform"),
+                (format!("<svg {NS}><polygon points='0 0 1 1 2'/></svg>"), "odd count"),
+                (format!("<svg {NS}><polygon points='0 0 1 x'/></svg>"), "cannot be read"),
+                (format!("<svg {NS}><rect width='1q' height='1'/></svg>"), "width"),
+                (
+                    format!("<svg {NS}><mask id='m'><rect width='1' height='1' fill='white'/></mask><rect width='2' height='2' mask='url(#m)'/></svg>"),
+                    "a mask",
+                ),
+                (
+                    format!("<svg {NS}><clipPath id='c'><circle r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
+                    "cuts the drawn outline",
+                ),
+                (format!("<svg {NS} width='0' height='1'><rect width='1' height='1'/></svg>"), ""),
+                (format!("<svg {NS} viewBox='-inf -inf inf inf'><rect width='1' height='1'/></svg>"), ""),
+                (format!("<svg {NS}><rect width='1e39' height='1'/></svg>"), ""),
+                (format!("<svg {NS}><path d='M 0 0 L 1e300 1'/></svg>"), ""),
+            ];
+        for (doc, words) in &docs {
+            match contours_from_svg_document(doc, 1e-3) {
+                Ok(c) => {
+                    // read: finite points only
+                    ensure!(
+                        words.is_empty()
+                            && c.iter()
+                                .flat_map(|c| c.points.iter())
+                                .all(|p| p.iter().all(|v| v.is_finite())),
+                        "{doc:?} was read"
+                    );
+                }
+                Err(e) => ensure!(e.to_string().contains(words), "{doc:?}: {e}"),
+            }
         }
         Ok(())
     })]

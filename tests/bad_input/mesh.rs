@@ -1,5 +1,4 @@
-//! mesh: Mesh::try_of_surface, the Bézier conversion of curves (`bezier::from_curve`), and
-//! (feature `report`) the mesh files
+//! mesh: Mesh::try_of_surface, and (feature `report`) the mesh files
 
 use super::*;
 use splinelab::Mesh;
@@ -77,19 +76,6 @@ fn mesh_cases() -> Vec<Case> {
                 );
             }
             Ok(())
-        }),
-        case("mesh::bezier_conversion_bad_tolerances", || {
-            use splinelab::bezier::from_curve::cubic_segments;
-            let c = ok(CardinalSpline::try_new(some_points(5), 0.5))?;
-            for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-                expect_err!(cubic_segments(&c, bad), Error::NotPositive { .. })?;
-            }
-            Ok(())
-        }),
-        case("mesh::bezier_conversion_below_rounding", || {
-            use splinelab::bezier::from_curve::cubic_segments;
-            let circle = ok(NurbsCurve::circle9(v2(0.0, 0.0), 1e6))?;
-            expect_err!(cubic_segments(&circle, 5e-324), Error::NoConvergence { .. })
         }),
     ]
 }

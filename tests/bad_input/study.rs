@@ -16,6 +16,7 @@ pub(super) fn cases() -> Vec<Case> {
     all.extend(uniform_and_convergence_cases());
     all.extend(table_i_cases());
     all.extend(outline_cases());
+    all.extend(request_cases());
     all
 }
 
@@ -442,6 +443,106 @@ fn outline_cases() -> Vec<Case> {
             let m = &s.methods[0];
             ensure!(m.within_tolerance() && m.error() <= 0.01, "{s:?}");
             ensure!(m.counted() == 14, "{} points", m.counted());
+            Ok(())
+        }),
+    ]
+}
+
+/// The outline search's requests: no contour, no method, bad tolerances and budgets, stages.
+fn request_cases() -> Vec<Case> {
+    vec![
+        case("study::fewest_requests", || {
+            use splinelab::input::Contour;
+            use splinelab::interp::choice::Family;
+            use splinelab::study::outline::{default_options, fewest, Tolerance};
+            let line = Contour {
+                points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
+                closed: false,
+            };
+            let point = Contour {
+                points: vec![Vector2::new(0.0, 0.0); 5],
+                closed: true,
+            };
+            let nan = Contour {
+                points: vec![Vector2::new(0.0, 0.0), Vector2::new(f64::NAN, 1.0)],
+                closed: false,
+            };
+            let fams = [Family::Linear];
+            for (outline, tol) in [
+                (vec![], Tolerance::default()),
+                (vec![point], Tolerance::default()),
+                (vec![nan], Tolerance::Absolute(0.1)),
+                (vec![line.clone()], Tolerance::Absolute(0.0)),
+                (vec![line.clone()], Tolerance::Absolute(f64::NAN)),
+                (vec![line.clone()], Tolerance::Fraction(f64::INFINITY)),
+            ] {
+                ensure!(
+                    fewest(&outline, tol, &fams, &default_options(), &|_| {}).is_err(),
+                    "{outline:?} {tol:?}"
+                );
+            }
+            let mut huge = default_options();
+            huge.max_points = usize::MAX;
+            huge.random_starts = usize::MAX;
+            ensure!(
+                fewest(&[line], Tolerance::default(), &fams, &huge, &|_| {}).is_err(),
+                "options"
+            );
+            for t in ["", "%", "1%%", "-5", "0%", "NaN", "1e999%", "12 cm"] {
+                ensure!(t.parse::<Tolerance>().is_err(), "tolerance {t:?}");
+            }
+            Ok(())
+        }),
+        case("study::fewest_in_stages_requests", || {
+            use splinelab::input::Contour;
+            use splinelab::interp::choice::Family;
+            use splinelab::study::outline::{default_options, fewest_in_stages, Tolerance};
+            use splinelab::study::table_i::thorough_options;
+            let line = Contour {
+                points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
+                closed: false,
+            };
+            let fams = [Family::Linear];
+            // no stage; a later stage refused as the first would be
+            ensure!(
+                fewest_in_stages(
+                    std::slice::from_ref(&line),
+                    Tolerance::default(),
+                    &fams,
+                    &[],
+                    &|_| {}
+                )
+                .is_err(),
+                "no stage"
+            );
+            let mut huge = default_options();
+            huge.random_starts = usize::MAX;
+            let stages = [default_options(), huge];
+            ensure!(
+                fewest_in_stages(
+                    std::slice::from_ref(&line),
+                    Tolerance::default(),
+                    &fams,
+                    &stages,
+                    &|_| {}
+                )
+                .is_err(),
+                "a bad second stage"
+            );
+            // a thorough stage after the default one: never more points
+            let stages = [default_options(), thorough_options(&default_options())];
+            let two = ok(fewest_in_stages(
+                &[line],
+                Tolerance::default(),
+                &fams,
+                &stages,
+                &|_| {},
+            ))?;
+            ensure!(
+                two.methods[0].counted() == 2,
+                "{}",
+                two.methods[0].counted()
+            );
             Ok(())
         }),
     ]

@@ -103,61 +103,6 @@ fn outline_file_cases() -> Vec<Case> {
             }
             Ok(())
         }),
-        case("user::svg_documents", || {
-            use splinelab::input::contours_from_svg_document;
-            const NS: &str = "xmlns='http://www.w3.org/2000/svg'";
-            // (document, words its refusal says)
-            let docs: Vec<(String, &str)> = vec![
-                ("".into(), "not well-formed XML"),
-                ("<".into(), "not well-formed XML"),
-                ("<path d='".into(), "not well-formed XML"),
-                ("<!-- <path d='M 0 0 L 1 1'/>".into(), "not well-formed XML"),
-                ("<svg><path d='M 0 0 L 1 1'/></svg>".into(), "not SVG's <svg>"),
-                (format!("<svg {NS}/>"), "draws nothing"),
-                (format!("<svg {NS}><path/></svg>"), "draws nothing"),
-                (format!("<svg {NS}><path d=M0,0/></svg>"), "not well-formed XML"),
-                (format!("<svg {NS}><path d='M 0 0 S 1 1 2'/></svg>"), "S is short"),
-                (format!("<svg {NS}><path d='M 0 0 A 1 1 0 1e0 1 2 2'/></svg>"), "cannot read 'e'"),
-                (format!("<svg {NS}><path d='Z'/></svg>"), "starts with a move"),
-                (format!("<svg {NS}><path d=\"M 0 0 L 1e400 0\"/></svg>"), "not a finite"),
-                (format!("<svg {NS}><text>a</text><rect width='1' height='1'/></svg>"), "<text>"),
-                (format!("<svg {NS}><image width='1' height='1'/></svg>"), "<image>"),
-                (format!("<svg {NS}><foreignObject/></svg>"), "<foreignObject>"),
-                (format!("<svg {NS}><use href='icons.svg#home'/><rect width='1' height='1'/></svg>"), "another file"),
-                (format!("<svg {NS}><rect width='1' height='1' transform='rotate(30'/></svg>"), "transform"),
-                (format!("<svg {NS}><polygon points='0 0 1 1 2'/></svg>"), "odd count"),
-                (format!("<svg {NS}><polygon points='0 0 1 x'/></svg>"), "cannot be read"),
-                (format!("<svg {NS}><rect width='1q' height='1'/></svg>"), "width"),
-                (
-                    format!("<svg {NS}><mask id='m'><rect width='1' height='1' fill='white'/></mask><rect width='2' height='2' mask='url(#m)'/></svg>"),
-                    "a mask",
-                ),
-                (
-                    format!("<svg {NS}><clipPath id='c'><circle r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
-                    "cuts the drawn outline",
-                ),
-                (format!("<svg {NS} width='0' height='1'><rect width='1' height='1'/></svg>"), ""),
-                (format!("<svg {NS} viewBox='-inf -inf inf inf'><rect width='1' height='1'/></svg>"), ""),
-                (format!("<svg {NS}><rect width='1e39' height='1'/></svg>"), ""),
-                (format!("<svg {NS}><path d='M 0 0 L 1e300 1'/></svg>"), ""),
-            ];
-            for (doc, words) in &docs {
-                match contours_from_svg_document(doc, 1e-3) {
-                    Ok(c) => {
-                        // read: finite points only
-                        ensure!(
-                            words.is_empty()
-                                && c.iter()
-                                    .flat_map(|c| c.points.iter())
-                                    .all(|p| p.iter().all(|v| v.is_finite())),
-                            "{doc:?} was read"
-                        );
-                    }
-                    Err(e) => ensure!(e.to_string().contains(words), "{doc:?}: {e}"),
-                }
-            }
-            Ok(())
-        }),
     ]
 }
 
@@ -250,186 +195,88 @@ fn fit_cases() -> Vec<Case> {
 /// Requests refused: the outline search's (`fewest`, `fewest_in_stages`, tolerances) and
 /// the surface meshes' (partitions, built-in surfaces, formats).
 fn request_cases() -> Vec<Case> {
-    vec![
-        case("user::fewest_requests", || {
-            use splinelab::input::Contour;
-            use splinelab::interp::choice::Family;
-            use splinelab::study::outline::{default_options, fewest, Tolerance};
-            let line = Contour {
-                points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
-                closed: false,
-            };
-            let point = Contour {
-                points: vec![Vector2::new(0.0, 0.0); 5],
-                closed: true,
-            };
-            let nan = Contour {
-                points: vec![Vector2::new(0.0, 0.0), Vector2::new(f64::NAN, 1.0)],
-                closed: false,
-            };
-            let fams = [Family::Linear];
-            for (outline, tol) in [
-                (vec![], Tolerance::default()),
-                (vec![point], Tolerance::default()),
-                (vec![nan], Tolerance::Absolute(0.1)),
-                (vec![line.clone()], Tolerance::Absolute(0.0)),
-                (vec![line.clone()], Tolerance::Absolute(f64::NAN)),
-                (vec![line.clone()], Tolerance::Fraction(f64::INFINITY)),
-            ] {
-                ensure!(
-                    fewest(&outline, tol, &fams, &default_options(), &|_| {}).is_err(),
-                    "{outline:?} {tol:?}"
-                );
-            }
-            let mut huge = default_options();
-            huge.max_points = usize::MAX;
-            huge.random_starts = usize::MAX;
+    vec![case("user::surface_requests", || {
+        use splinelab::report::user::surface::{BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh};
+        for p in [
+            "",
+            "x",
+            "3x",
+            "x3",
+            "0x2",
+            "2x0",
+            "axb",
+            "3x3x3",
+            "99999999999999999999x2",
+        ] {
+            let parsed = p.parse::<PartitionSpec>();
             ensure!(
-                fewest(&[line], Tolerance::default(), &fams, &huge, &|_| {}).is_err(),
-                "options"
+                parsed.is_err()
+                    || parsed
+                        .ok()
+                        .and_then(|s| s.partitions(&BuiltIn::Exp).ok())
+                        .is_none(),
+                "{p:?}"
             );
-            for t in ["", "%", "1%%", "-5", "0%", "NaN", "1e999%", "12 cm"] {
-                ensure!(t.parse::<Tolerance>().is_err(), "tolerance {t:?}");
-            }
-            Ok(())
-        }),
-        case("user::fewest_in_stages_requests", || {
-            use splinelab::input::Contour;
-            use splinelab::interp::choice::Family;
-            use splinelab::study::outline::{default_options, fewest_in_stages, Tolerance};
-            use splinelab::study::table_i::thorough_options;
-            let line = Contour {
-                points: vec![Vector2::new(0.0, 0.0), Vector2::new(1.0, 0.0)],
-                closed: false,
-            };
-            let fams = [Family::Linear];
-            // no stage; a later stage refused as the first would be
+        }
+        for (s, t) in [
+            (vec![], vec![0.0, 1.0]),
+            (vec![1.0, 0.0], vec![0.0, 1.0]),
+            (vec![0.0, f64::NAN], vec![0.0, 1.0]),
+        ] {
             ensure!(
-                fewest_in_stages(
-                    std::slice::from_ref(&line),
-                    Tolerance::default(),
-                    &fams,
-                    &[],
-                    &|_| {}
-                )
-                .is_err(),
-                "no stage"
+                PartitionSpec::Nodes(s, t)
+                    .partitions(&BuiltIn::Exp)
+                    .is_err(),
+                "nodes"
             );
-            let mut huge = default_options();
-            huge.random_starts = usize::MAX;
-            let stages = [default_options(), huge];
+        }
+        let (s, t) = ok("2x2"
+            .parse::<PartitionSpec>()
+            .map_err(|e| e.to_string())
+            .and_then(|p| p.partitions(&BuiltIn::Exp).map_err(|e| e.to_string())))?;
+        for (surface, steps) in [
+            (BuiltIn::Exp, 0),
+            (BuiltIn::Exp, usize::MAX),
+            (
+                BuiltIn::Torus {
+                    major: f64::NAN,
+                    minor: 1.0,
+                },
+                2,
+            ),
+            (
+                BuiltIn::Torus {
+                    major: 1.0,
+                    minor: 0.0,
+                },
+                2,
+            ),
+            (
+                BuiltIn::Sphere {
+                    radius: f64::INFINITY,
+                },
+                2,
+            ),
+            (BuiltIn::Sphere { radius: 1e308 }, 2),
+        ] {
             ensure!(
-                fewest_in_stages(
-                    std::slice::from_ref(&line),
-                    Tolerance::default(),
-                    &fams,
-                    &stages,
-                    &|_| {}
-                )
-                .is_err(),
-                "a bad second stage"
+                SurfaceMesh::try_new(&surface, s.clone(), t.clone(), steps).is_err(),
+                "{surface:?} {steps}"
             );
-            // a thorough stage after the default one: never more points
-            let stages = [default_options(), thorough_options(&default_options())];
-            let two = ok(fewest_in_stages(
-                &[line],
-                Tolerance::default(),
-                &fams,
-                &stages,
-                &|_| {},
-            ))?;
+        }
+        // the exp surface on huge nodes overflows: a typed error
+        let far = PartitionSpec::Nodes(vec![0.0, 800.0], vec![0.0, 1.0]);
+        let (s, t) = ok(far.partitions(&BuiltIn::Exp))?;
+        ensure!(
+            SurfaceMesh::try_new(&BuiltIn::Exp, s, t, 2).is_err(),
+            "exp(800)"
+        );
+        for name in ["a", "a.", "a.gltf", "a.obj.gz", ""] {
             ensure!(
-                two.methods[0].counted() == 2,
-                "{}",
-                two.methods[0].counted()
+                MeshFormat::of_path(name.as_ref(), false).is_err(),
+                "{name:?}"
             );
-            Ok(())
-        }),
-        case("user::surface_requests", || {
-            use splinelab::report::user::surface::{
-                BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh,
-            };
-            for p in [
-                "",
-                "x",
-                "3x",
-                "x3",
-                "0x2",
-                "2x0",
-                "axb",
-                "3x3x3",
-                "99999999999999999999x2",
-            ] {
-                let parsed = p.parse::<PartitionSpec>();
-                ensure!(
-                    parsed.is_err()
-                        || parsed
-                            .ok()
-                            .and_then(|s| s.partitions(&BuiltIn::Exp).ok())
-                            .is_none(),
-                    "{p:?}"
-                );
-            }
-            for (s, t) in [
-                (vec![], vec![0.0, 1.0]),
-                (vec![1.0, 0.0], vec![0.0, 1.0]),
-                (vec![0.0, f64::NAN], vec![0.0, 1.0]),
-            ] {
-                ensure!(
-                    PartitionSpec::Nodes(s, t)
-                        .partitions(&BuiltIn::Exp)
-                        .is_err(),
-                    "nodes"
-                );
-            }
-            let (s, t) = ok("2x2"
-                .parse::<PartitionSpec>()
-                .map_err(|e| e.to_string())
-                .and_then(|p| p.partitions(&BuiltIn::Exp).map_err(|e| e.to_string())))?;
-            for (surface, steps) in [
-                (BuiltIn::Exp, 0),
-                (BuiltIn::Exp, usize::MAX),
-                (
-                    BuiltIn::Torus {
-                        major: f64::NAN,
-                        minor: 1.0,
-                    },
-                    2,
-                ),
-                (
-                    BuiltIn::Torus {
-                        major: 1.0,
-                        minor: 0.0,
-                    },
-                    2,
-                ),
-                (
-                    BuiltIn::Sphere {
-                        radius: f64::INFINITY,
-                    },
-                    2,
-                ),
-                (BuiltIn::Sphere { radius: 1e308 }, 2),
-            ] {
-                ensure!(
-                    SurfaceMesh::try_new(&surface, s.clone(), t.clone(), steps).is_err(),
-                    "{surface:?} {steps}"
-                );
-            }
-            // the exp surface on huge nodes overflows: a typed error
-            let far = PartitionSpec::Nodes(vec![0.0, 800.0], vec![0.0, 1.0]);
-            let (s, t) = ok(far.partitions(&BuiltIn::Exp))?;
-            ensure!(
-                SurfaceMesh::try_new(&BuiltIn::Exp, s, t, 2).is_err(),
-                "exp(800)"
-            );
-            for name in ["a", "a.", "a.gltf", "a.obj.gz", ""] {
-                ensure!(
-                    MeshFormat::of_path(name.as_ref(), false).is_err(),
-                    "{name:?}"
-                );
-            }
-            Ok(())
-        }),
-    ]
+        }
+        Ok(())
+    })]
 }
