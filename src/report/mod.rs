@@ -16,6 +16,9 @@
 //!   `fit`, `fewest` and `surface`).
 //! - [`notebook`]: what a notebook displays — matrices in the report's layout, partials,
 //!   formulas, labelled values.
+//! - [`bench`](mod@bench): the workloads of `splinelab bench`, their timing, peers' timings and the
+//!   scaling figure; `Output` (one output, its id and build) and the registry below
+//!   ([`outputs`]).
 //! - [`site`]: a static site of a run's outputs (figures, tables, the notebooks' pages and
 //!   the API documentation), opened from the file system.
 //! - [`seed000`], [`seed001`], [`seed003`]: each seed's outputs with the seed's data, listed

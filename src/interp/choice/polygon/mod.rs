@@ -4,6 +4,10 @@
 //! point tested in one sweep by the cones of Chan & Chin ("On approximation of polygonal
 //! curves with minimum number of line segments or minimum error", 1996).
 //!
+//! **Files.** This file: the search, the candidates, the bound; `cone.rs`: the cone of
+//! directions within the tolerance of every vertex swept; `graph.rs`: the sweeps that list
+//! the shortcuts and the shortest paths and cycles over them.
+//!
 //! **Candidates.** The points may sit at the reference's vertices and at equal steps along
 //! each of its segments, at most `h` apart along the outline, `h` = [`RESOLUTION`] × 2 × the
 //! tolerance. It is coarser only when the points along the segments would exceed
