@@ -732,3 +732,15 @@ pub fn module_cycles(src: &Path, through_mod: bool) -> Vec<String> {
     }
     out
 }
+
+/// The imports between the top-level rooms of the library (files and folders of `src/`):
+/// each edge `(from, to)` with one witness `file:line: text`.
+pub fn room_edges(src: &Path) -> Vec<(String, String, String)> {
+    import_graphs(src)
+        .remove(&Vec::new())
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|((a, b), _)| a != "mod" && b != "mod")
+        .map(|((a, b), w)| (a, b, w.first().cloned().unwrap_or_default()))
+        .collect()
+}

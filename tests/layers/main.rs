@@ -12,7 +12,7 @@
 
 mod imports;
 
-use imports::{code_lines, module_cycles, root_reexport_offenders, sources, src_root};
+use imports::{code_lines, module_cycles, room_edges, root_reexport_offenders, sources, src_root};
 use std::path::{Path, PathBuf};
 
 /// The lines of code (comments cut) of `path` that name one of `layers` as a path.
@@ -275,5 +275,71 @@ fn the_length_check_counts_a_function_from_its_line_to_its_brace() {
     assert_eq!(
         found,
         vec![("a".to_string(), 2, 4), ("c".to_string(), 7, 1)]
+    );
+}
+
+/// The floors of the README's Layout (`| floor | rooms |`), top first: each floor's rooms,
+/// named as modules (`interp/` and `nurbs.rs` are `interp` and `nurbs`).
+fn readme_floors(readme: &str) -> Vec<Vec<String>> {
+    let Some(start) = readme.find("| floor | rooms |") else {
+        return Vec::new();
+    };
+    readme[start..]
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .map(|l| {
+            let rooms = l.splitn(3, '|').nth(2).unwrap_or("");
+            rooms
+                .split('`')
+                .skip(1)
+                .step_by(2)
+                .map(|r| r.trim_end_matches('/').trim_end_matches(".rs").to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// The README's Layout gives the floors of the rooms; every room of `src/` is on one, and
+/// each imports only rooms on the floors below its own.
+#[test]
+fn every_room_imports_only_the_floors_below_it() {
+    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+        .expect("the README");
+    let floors = readme_floors(&readme);
+    assert!(
+        floors.len() > 5,
+        "the README's floor table is missing: {floors:?}"
+    );
+    let floor_of = |room: &str| floors.iter().position(|f| f.iter().any(|r| r == room));
+    let mut wrong = Vec::new();
+    for (from, to, witness) in room_edges(&src_root()) {
+        match (floor_of(&from), floor_of(&to)) {
+            (Some(a), Some(b)) if a < b => {}
+            (Some(_), Some(_)) => {
+                wrong.push(format!("{from} → {to} (not a lower floor): {witness}"))
+            }
+            _ => wrong.push(format!(
+                "{from} → {to}: a room on no floor of the README: {witness}"
+            )),
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "imports against the README's floors:\n{}",
+        wrong.join("\n")
+    );
+}
+
+#[test]
+fn the_floor_table_is_read_from_the_readme() {
+    let text =
+        "x\n| floor | rooms |\n|---|---|\n| top | `a/`, `b.rs` (note) |\n| low | `c.rs` |\n\nmore";
+    assert_eq!(
+        readme_floors(text),
+        vec![
+            vec!["a".to_string(), "b".to_string()],
+            vec!["c".to_string()]
+        ]
     );
 }
