@@ -234,9 +234,10 @@ proptest! {
         match points_from_csv::<2>(&text, &columns) {
             Ok(p) => prop_assert!(p.iter().all(|q| q.iter().all(|x| x.is_finite()))),
             Err(Error::Parse { line, column, .. }) => {
-                let l = text.lines().nth(line - 1);
+                // lines end with \n, \r\n or \r, as the reader reads them
+                let l = text.replace("\r\n", "\n").split(['\n', '\r']).nth(line - 1).map(str::to_string);
                 prop_assert!(l.is_some(), "line {} of {:?}", line, text);
-                prop_assert!(column >= 1 && column <= l.unwrap().chars().count() + 1);
+                prop_assert!(column >= 1 && column <= l.unwrap_or_default().chars().count() + 1);
             }
             Err(Error::TooFewPoints { .. }) => {}
             Err(e) => prop_assert!(false, "unexpected {e}"),
@@ -648,4 +649,36 @@ mod limits {
             }
         }
     }
+}
+
+/// The forms the CSV grammar allows that a hand-written layer got wrong: pandas' unnamed
+/// index column, CR-only line ends with comments, headers narrower than their rows, empty
+/// and quoted names.
+#[test]
+fn csv_by_the_grammar_line_ends_comments_and_headers() {
+    let names = |n: &[&str]| Columns::Names(n.iter().map(|s| s.to_string()).collect());
+    // pandas' to_csv(sep=' ') with its index: the header's first name is empty
+    let text = " w x\n0 1.5 2.5\n1 3.5 4.5\n";
+    let p = points_from_csv::<2>(text, &names(&["w", "x"])).unwrap();
+    assert_eq!(p, [v2(1.5, 2.5), v2(3.5, 4.5)]);
+    // the same without the empty name: a header one short names the last columns
+    let text = "w,x\n0,1.5,2.5\n1,3.5,4.5\n";
+    let p = points_from_csv::<2>(text, &names(&["w", "x"])).unwrap();
+    assert_eq!(p, [v2(1.5, 2.5), v2(3.5, 4.5)]);
+    // two short: refused, never shifted
+    let (line, _, message) = at(points_from_csv("w,x\n0,1,1.5,2.5\n", &names(&["w", "x"])));
+    assert_eq!(line, 2, "{message}");
+    assert!(message.contains("the header has 2 names"), "{message}");
+    // CR-only line ends: a comment ends at its line end
+    for end in ["\r", "\n", "\r\n"] {
+        let text = ["# points", "0,1", "1,2", "# more", "2,3", "3,4", "4,5"].join(end);
+        let p = points_from_csv::<2>(&text, &Columns::First).unwrap();
+        assert_eq!(p.len(), 5, "{end:?}");
+        let (line, column, _) = at(points_from_csv(&format!("0,1{end}1,x"), &Columns::First));
+        assert_eq!((line, column), (2, 3), "{end:?}");
+    }
+    // empty and quoted names are names
+    let text = "\"\",\"a b\",\"\"\"c\"\"\"\n1,2,3\n";
+    let p = points_from_csv::<2>(text, &names(&["\"c\"", ""])).unwrap();
+    assert_eq!(p, [v2(3.0, 1.0)]);
 }

@@ -13,6 +13,8 @@ pub mod flatten;
 pub mod font;
 #[cfg(feature = "svg")]
 pub mod svg_document;
+#[cfg(feature = "svg")]
+pub mod svg_limits;
 pub mod svg_path;
 
 #[cfg(feature = "svg")]
@@ -21,19 +23,30 @@ pub use csv::{points_from_csv, Columns};
 pub use flatten::{Contour, SvgArc};
 #[cfg(feature = "svg")]
 pub use svg_document::{
-    contours_from_svg_document, read_svg_document, DrawnPath, Stroke, SvgOutline,
+    contours_from_svg_document, read_svg_document, DrawnPath, Stroke, SvgDocument, SvgExtent,
+    SvgOutline,
 };
 pub use svg_path::contours_from_svg_path;
 
 /// The 1-based line and column (in characters) of byte `at` of `text` (clamped to the text, and
-/// back to a character boundary): where a reader places what it cannot read.
+/// back to a character boundary): where a reader places what it cannot read. Lines end with
+/// `\n`, `\r\n` or `\r`.
 pub(crate) fn position(text: &str, at: usize) -> (usize, usize) {
     let mut at = at.min(text.len());
     while !text.is_char_boundary(at) {
         at -= 1;
     }
     let before = &text[..at];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, column)
+    let bytes = before.as_bytes();
+    let ends = bytes
+        .iter()
+        .enumerate()
+        .filter(|&(k, &b)| b == b'\n' || (b == b'\r' && bytes.get(k + 1) != Some(&b'\n')))
+        .count();
+    let column = before
+        .rsplit(['\n', '\r'])
+        .next()
+        .map_or(0, |l| l.chars().count())
+        + 1;
+    (ends + 1, column)
 }

@@ -35,8 +35,8 @@
 
 use super::clip::FillRule;
 use super::flatten::{Contour, Flattener};
-use super::position;
-use super::svg_path::contours_from_svg_path;
+use super::svg_limits::{check_css, check_entities, check_numbers, check_placement, refuse_at};
+use super::svg_path::{contours_from_svg_path, normalized_path_data};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix2, Vector2};
 use std::str::FromStr;
@@ -154,65 +154,231 @@ impl SvgOutline {
 }
 
 /// Every path of an SVG document a viewer draws, with its fill and stroke (module docs),
-/// flattened within `tolerance`.
+/// flattened within `tolerance`: [`SvgDocument::parse`], then [`SvgDocument::outline`].
 ///
 /// # Errors
-/// [`Error::NotPositive`] for a tolerance that is not positive and finite; [`Error::Parse`]
-/// at the document's line and column for XML that cannot be read and for what the module
-/// docs list; [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] points or the
-/// parser's element limit.
+/// As [`SvgDocument::parse`] and [`SvgDocument::outline`].
 pub fn read_svg_document(text: &str, tolerance: f64) -> Result<SvgOutline> {
     crate::error::positive("SVG flattening tolerance", tolerance)?;
-    let options = roxmltree::ParsingOptions {
-        allow_dtd: true,
-        ..roxmltree::ParsingOptions::default()
-    };
-    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
-        let pos = e.pos();
-        Error::Parse {
-            what: WHAT,
-            line: pos.row as usize,
-            column: pos.col as usize,
-            message: format!("not well-formed XML: {e}"),
+    SvgDocument::parse(text)?.outline(tolerance)
+}
+
+/// An SVG document read once (module docs), whose outline can then be measured
+/// ([`SvgDocument::extent`]) and flattened ([`SvgDocument::outline`]) without reading it again.
+///
+/// ```
+/// use splinelab::input::svg_document::SvgDocument;
+/// // a lens of two cubics whose ends lie on one line: its size is that of its curves
+/// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 16 16">
+///   <path d="M2 8C6 2 10 2 14 8C10 14 6 14 2 8Z"/></svg>"#;
+/// let doc = SvgDocument::parse(svg)?;
+/// let extent = doc.extent()?;
+/// assert!((extent.height - 9.0).abs() < 1e-6 && (extent.width - 12.0).abs() < 1e-6);
+/// let outline = doc.outline(1e-3 * extent.size())?;
+/// assert_eq!(outline.paths.len(), 1);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+pub struct SvgDocument<'a> {
+    text: &'a str,
+    doc: roxmltree::Document<'a>,
+    tree: usvg::Tree,
+    to_user: Affine,
+    has_arcs: bool,
+}
+
+impl std::fmt::Debug for SvgDocument<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SvgDocument")
+            .field("bytes", &self.text.len())
+            .field("has_arcs", &self.has_arcs)
+            .finish_non_exhaustive()
+    }
+}
+
+/// The extent of a document's drawn curves (not of their chords) in user units, and the
+/// bound of the parser's approximation of its arcs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SvgExtent {
+    /// The width of the bounding box of the drawn curves.
+    pub width: f64,
+    /// Its height.
+    pub height: f64,
+    /// The bound of the parser's cubics for the document's arcs
+    /// ([`arc_approximation_bound`] over every drawn cubic; 0 without arcs).
+    pub arcs: f64,
+}
+
+impl SvgExtent {
+    /// The larger side of the bounding box.
+    pub fn size(&self) -> f64 {
+        self.width.max(self.height)
+    }
+}
+
+impl<'a> SvgDocument<'a> {
+    /// Reads `text`: the bounds of [`super::svg_limits`] first (entities, numbers,
+    /// transforms, style sheets), then the XML and the SVG parser, which opens no file and
+    /// loads no image a document names.
+    ///
+    /// # Errors
+    /// [`Error::Parse`] at the document's line and column for XML that cannot be read, for
+    /// what the module docs list and beyond the bounds of [`super::svg_limits`];
+    /// [`Error::TooLarge`] beyond the parser's element limit.
+    pub fn parse(text: &'a str) -> Result<SvgDocument<'a>> {
+        check_entities(text)?;
+        let doc = roxmltree::Document::parse_with_options(text, xml_options()).map_err(|e| {
+            let pos = e.pos();
+            Error::Parse {
+                what: WHAT,
+                line: pos.row as usize,
+                column: pos.col as usize,
+                message: format!("not well-formed XML: {e}"),
+            }
+        })?;
+        let has_arcs = check_elements(&doc)?;
+        check_css(&doc)?;
+        check_placement(&doc)?;
+        // what the parser reads: path data whose commas the path grammar takes, each byte in
+        // its place (svg_path::normalized_path_data)
+        let tree = match normalized_document(&doc) {
+            Some(t) => {
+                let reparsed =
+                    roxmltree::Document::parse_with_options(&t, xml_options()).map_err(|e| {
+                        refuse_at(text, 0, format!("not well-formed XML once normalised: {e}"))
+                    })?;
+                svg_tree(&reparsed, text)?
+            }
+            None => svg_tree(&doc, text)?,
+        };
+        let to_user = viewport_to_user(&doc, &tree).ok_or_else(|| {
+            refuse_at(
+                text,
+                doc.root_element().range().start,
+                "the viewBox or the document's size cannot be inverted".into(),
+            )
+        })?;
+        Ok(SvgDocument {
+            text,
+            doc,
+            tree,
+            to_user,
+            has_arcs,
+        })
+    }
+
+    /// The bounding box of the drawn curves (their extrema, not their end points) and the
+    /// bound of the parser's arcs.
+    ///
+    /// # Errors
+    /// As [`SvgDocument::outline`], but for the tolerance.
+    pub fn extent(&self) -> Result<SvgExtent> {
+        let mut reader = self.reader(None);
+        reader.group(self.tree.root(), &self.to_user)?;
+        reader.nothing_drawn()?;
+        let (lo, hi) = reader.bounds;
+        Ok(SvgExtent {
+            width: hi.x - lo.x,
+            height: hi.y - lo.y,
+            arcs: reader.arc_bound,
+        })
+    }
+
+    /// Every drawn path (module docs), flattened within `tolerance`.
+    ///
+    /// # Errors
+    /// [`Error::NotPositive`] for a tolerance that is not positive and finite;
+    /// [`Error::Parse`] at the element for what the module docs list, and, naming what was
+    /// dropped and why, for a document that draws nothing; [`Error::TooLarge`] beyond
+    /// [`crate::error::MAX_ELEMENTS`] points.
+    pub fn outline(&self, tolerance: f64) -> Result<SvgOutline> {
+        crate::error::positive("SVG flattening tolerance", tolerance)?;
+        let mut reader = self.reader(Some(tolerance));
+        reader.group(self.tree.root(), &self.to_user)?;
+        reader.nothing_drawn()?;
+        Ok(SvgOutline {
+            within: tolerance + reader.arc_bound,
+            arcs: reader.arc_bound,
+            paths: reader.out,
+        })
+    }
+
+    fn reader(&self, tolerance: Option<f64>) -> Reader<'_, 'a> {
+        Reader {
+            text: self.text,
+            doc: &self.doc,
+            tolerance,
+            has_arcs: self.has_arcs,
+            arc_bound: 0.0,
+            bounds: (
+                Vector2::repeat(f64::INFINITY),
+                Vector2::repeat(f64::NEG_INFINITY),
+            ),
+            dropped: Vec::new(),
+            out: Vec::new(),
         }
-    })?;
-    let has_arcs = check_elements(&doc)?;
-    let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| match e {
+    }
+}
+
+/// The XML parser's options: a document type's entities read (bounded before:
+/// [`check_entities`]), at most [`crate::error::MAX_ELEMENTS`] nodes.
+fn xml_options<'input>() -> roxmltree::ParsingOptions<'input> {
+    roxmltree::ParsingOptions {
+        allow_dtd: true,
+        nodes_limit: u32::try_from(crate::error::MAX_ELEMENTS).unwrap_or(u32::MAX),
+        ..roxmltree::ParsingOptions::default()
+    }
+}
+
+/// The SVG parser's tree of `doc` (whose text is `text`, or a normalised copy of it with
+/// every byte in its place).
+fn svg_tree(doc: &roxmltree::Document, text: &str) -> Result<usvg::Tree> {
+    usvg::Tree::from_xmltree(doc, &parser_options()).map_err(|e| match e {
         usvg::Error::ElementsLimitReached => Error::TooLarge {
             what: "SVG elements (with every <use> expanded)",
             got: 1_000_001,
             max: 1_000_000,
         },
         other => refuse_at(text, doc.root_element().range().start, other.to_string()),
-    })?;
-    let to_user = viewport_to_user(&doc, &tree).ok_or_else(|| {
-        refuse_at(
-            text,
-            doc.root_element().range().start,
-            "the viewBox or the document's size cannot be inverted".into(),
-        )
-    })?;
-    let mut reader = Reader {
-        text,
-        doc: &doc,
-        tolerance,
-        has_arcs,
-        arc_bound: 0.0,
-        out: Vec::new(),
-    };
-    reader.group(tree.root(), &to_user)?;
-    if reader.out.iter().all(|p| p.contours.is_empty()) {
-        return Err(refuse_at(
-            text,
-            doc.root_element().range().start,
-            "the document draws nothing (no visible path, shape or use of one)".into(),
-        ));
-    }
-    Ok(SvgOutline {
-        within: tolerance + reader.arc_bound,
-        arcs: reader.arc_bound,
-        paths: reader.out,
     })
+}
+
+/// The parser's options: no file, URL or image a document names is resolved (`<image>` is
+/// refused by name before the parser runs; a filter's `feImage` is not read, as filters are
+/// not), no font is loaded.
+fn parser_options() -> usvg::Options<'static> {
+    usvg::Options {
+        resources_dir: None,
+        image_href_resolver: usvg::ImageHrefResolver {
+            resolve_data: Box::new(|_, _, _| None),
+            resolve_string: Box::new(|_, _| None),
+        },
+        ..usvg::Options::default()
+    }
+}
+
+/// The document's text with every `d` attribute written as the reader reads it
+/// ([`super::svg_path::normalized_path_data`], which keeps every byte in its place), if any
+/// differs.
+fn normalized_document(doc: &roxmltree::Document) -> Option<String> {
+    let text = doc.input_text();
+    let mut out: Option<String> = None;
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        let Some(attr) = node
+            .attributes()
+            .find(|a| a.name() == "d" && a.namespace().is_none())
+        else {
+            continue;
+        };
+        let range = attr.range_value();
+        if text.get(range.clone()) != Some(attr.value()) {
+            continue;
+        }
+        if let std::borrow::Cow::Owned(fixed) = normalized_path_data(attr.value()) {
+            out.get_or_insert_with(|| text.to_string())
+                .replace_range(range, &fixed);
+        }
+    }
+    out
 }
 
 /// A bound on the distance between a cubic Bézier `p` and the elliptical arc it replaces, if
@@ -322,19 +488,62 @@ fn viewport_to_user(doc: &roxmltree::Document, tree: &usvg::Tree) -> Option<Affi
 struct Reader<'a, 'input> {
     text: &'a str,
     doc: &'a roxmltree::Document<'input>,
-    tolerance: f64,
+    /// The flattening tolerance; `None` measures only (bounds and arcs, no contours).
+    tolerance: Option<f64>,
     /// Whether the document has arcs, which the parser replaces by cubics.
     has_arcs: bool,
     /// The largest [`arc_approximation_bound`] of a drawn cubic (if `has_arcs`).
     arc_bound: f64,
+    /// The bounding box of the drawn curves.
+    bounds: (Vector2<f64>, Vector2<f64>),
+    /// What was not drawn, and why (for a document that draws nothing).
+    dropped: Vec<String>,
     out: Vec<DrawnPath>,
 }
 
 impl Reader<'_, '_> {
+    /// Refuses a document that draws nothing, naming what was dropped and why.
+    fn nothing_drawn(&self) -> Result<()> {
+        if self.bounds.0.x <= self.bounds.1.x {
+            return Ok(());
+        }
+        let why = match self.dropped.len() {
+            0 => "no visible path, shape or use of one".to_string(),
+            n => {
+                let shown: Vec<&str> = self.dropped.iter().take(3).map(String::as_str).collect();
+                let more = if n > 3 {
+                    format!("; {} more", n - 3)
+                } else {
+                    String::new()
+                };
+                format!("{}{more}", shown.join("; "))
+            }
+        };
+        Err(refuse_at(
+            self.text,
+            self.doc.root_element().range().start,
+            format!("the document draws nothing: {why}"),
+        ))
+    }
+
+    /// `<path id="a">` (or the tag alone) for the element with this id.
+    fn named(&self, id: &str) -> String {
+        match self.element(id) {
+            Some(node) => match node.attribute("id") {
+                Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
+                None => format!("<{}>", node.tag_name().name()),
+            },
+            None if !id.is_empty() => format!("the path {id:?}"),
+            None => "a path".to_string(),
+        }
+    }
+
     /// Reads the drawn paths of `group`, whose coordinates `ts` maps to user units.
     fn group(&mut self, group: &usvg::Group, ts: &Affine) -> Result<()> {
         let ts = ts.then_inner(&Affine::of(group.transform()));
         if group.opacity().get() <= 0.0 {
+            let named = self.named(group.id());
+            self.dropped.push(format!("{named} has opacity 0"));
             return Ok(());
         }
         if group.mask().is_some() {
@@ -393,43 +602,69 @@ impl Reader<'_, '_> {
                     .dasharray()
                     .map(|d| d.iter().map(|&x| f64::from(x) * stretch).collect()),
             });
-        if !path.is_visible() || (fill.is_none() && stroke.is_none()) {
+        if fill.is_none() && stroke.is_none() {
+            let named = self.named(path.id());
+            self.dropped.push(format!(
+                "{named} has neither a visible fill nor a visible stroke"
+            ));
             return Ok(());
         }
-        let mut contours = self
-            .flatten(path.data(), ts, fill.is_some())
-            .map_err(|e| self.place_id(path.id(), e))?;
-        if fill.is_some() && contours.iter().any(|c| encloses_nothing(&c.points)) {
-            // a subpath on one line has no inside to fill (an SVG <line> is filled so): a
-            // viewer draws only its stroke, whose outline is its centre line, or nothing
-            let lines = match stroke {
-                Some(_) => self
-                    .flatten(path.data(), ts, false)
-                    .map_err(|e| self.place_id(path.id(), e))?,
-                None => Vec::new(),
-            };
-            contours = if lines.len() == contours.len() {
-                contours
-                    .into_iter()
-                    .zip(lines)
-                    .filter_map(|(c, l)| match encloses_nothing(&c.points) {
-                        false => Some(c),
-                        true => stroke.is_some().then_some(l),
-                    })
-                    .collect()
-            } else {
-                contours
-                    .into_iter()
-                    .filter(|c| !encloses_nothing(&c.points))
-                    .collect()
-            };
-            if contours.is_empty() {
-                return Ok(());
+        if !path.is_visible() {
+            let named = self.named(path.id());
+            self.dropped.push(format!("{named} is hidden"));
+            return Ok(());
+        }
+        let subpaths = subpaths(path.data(), ts);
+        if subpaths
+            .iter()
+            .any(|s| !s.points.iter().all(|p| p.iter().all(|x| x.is_finite())))
+        {
+            return Err(self.refuse_id(
+                path.id(),
+                "its coordinates overflow once transformed: not read",
+            ));
+        }
+        // a filled subpath on one line has no inside (an SVG <line> is filled so): a viewer
+        // draws only its stroke, whose outline is its centre line, or nothing; decided on the
+        // curves' control points, whatever the tolerance
+        let flat: Vec<bool> = subpaths
+            .iter()
+            .map(|s| fill.is_some() && encloses_nothing(&s.points))
+            .collect();
+        if stroke.is_none() && flat.iter().all(|&f| f) {
+            let named = self.named(path.id());
+            self.dropped.push(format!(
+                "{named} is filled, not stroked, and lies along one line: it has no inside"
+            ));
+            return Ok(());
+        }
+        let mut drawn = false;
+        for (sub, &f) in subpaths.iter().zip(&flat) {
+            if !f || stroke.is_some() {
+                drawn = true;
+                self.include((sub.lo, sub.hi));
             }
+        }
+        if !drawn {
+            return Ok(());
         }
         if self.has_arcs {
             self.arc_bound = self.arc_bound.max(arcs_bound(path.data(), ts));
         }
+        let Some(tolerance) = self.tolerance else {
+            return Ok(());
+        };
+        let contours = self
+            .flatten(path.data(), ts, fill.is_some(), tolerance)
+            .map_err(|e| self.place_id(path.id(), e))?;
+        let contours = if flat.iter().any(|&f| f) {
+            let lines = self
+                .flatten(path.data(), ts, false, tolerance)
+                .map_err(|e| self.place_id(path.id(), e))?;
+            pick_subpaths(contours, lines, &flat, stroke.is_some())
+        } else {
+            contours
+        };
         self.out.push(DrawnPath {
             id: path.id().to_string(),
             contours,
@@ -439,6 +674,11 @@ impl Reader<'_, '_> {
         Ok(())
     }
 
+    /// Widens the bounds to the box `(lo, hi)`.
+    fn include(&mut self, (lo, hi): (Vector2<f64>, Vector2<f64>)) {
+        self.bounds = (self.bounds.0.inf(&lo), self.bounds.1.sup(&hi));
+    }
+
     /// The contours of `data` mapped by `ts`, flattened within the tolerance, one a subpath; each subpath
     /// closed if `close_all` (a fill closes it).
     fn flatten(
@@ -446,9 +686,10 @@ impl Reader<'_, '_> {
         data: &usvg::tiny_skia_path::Path,
         ts: &Affine,
         close_all: bool,
+        tolerance: f64,
     ) -> Result<Vec<Contour>> {
         use usvg::tiny_skia_path::PathSegment as S;
-        let mut pen = Flattener::new(self.tolerance)?;
+        let mut pen = Flattener::new(tolerance)?;
         let mut open = false;
         for segment in data.segments() {
             match segment {
@@ -495,9 +736,12 @@ impl Reader<'_, '_> {
                 &format!("{what} is clipped again: not read (simplify the clipping in the drawing program)"),
             ));
         }
+        let Some(tolerance) = self.tolerance else {
+            return Ok(());
+        };
         let mut region: Vec<(Vec<Contour>, FillRule)> = Vec::new();
         let ts = ts.then_inner(&Affine::of(clip.transform()));
-        self.clip_region(clip.root(), &ts, &mut region)?;
+        self.clip_region(clip.root(), &ts, tolerance, &mut region)?;
         let drawn: Vec<&Contour> = self.out[first..]
             .iter()
             .flat_map(|p| p.contours.iter())
@@ -516,6 +760,7 @@ impl Reader<'_, '_> {
         &self,
         group: &usvg::Group,
         ts: &Affine,
+        tolerance: f64,
         out: &mut Vec<(Vec<Contour>, FillRule)>,
     ) -> Result<()> {
         for child in group.children() {
@@ -527,7 +772,12 @@ impl Reader<'_, '_> {
                             "a clip path whose content is clipped again is not read",
                         ));
                     }
-                    self.clip_region(g, &ts.then_inner(&Affine::of(g.transform())), out)?
+                    self.clip_region(
+                        g,
+                        &ts.then_inner(&Affine::of(g.transform())),
+                        tolerance,
+                        out,
+                    )?
                 }
                 usvg::Node::Path(p) if p.is_visible() => {
                     let rule = match p.fill().map(|f| f.rule()) {
@@ -535,7 +785,7 @@ impl Reader<'_, '_> {
                         _ => FillRule::NonZero,
                     };
                     let contours = self
-                        .flatten(p.data(), ts, true)
+                        .flatten(p.data(), ts, true, tolerance)
                         .map_err(|e| self.place_id(p.id(), e))?;
                     out.push((contours, rule));
                 }
@@ -627,16 +877,6 @@ fn arcs_bound(data: &usvg::tiny_skia_path::Path, ts: &Affine) -> f64 {
     bound
 }
 
-fn refuse_at(text: &str, at: usize, message: String) -> Error {
-    let (line, column) = position(text, at);
-    Error::Parse {
-        what: WHAT,
-        line,
-        column,
-        message,
-    }
-}
-
 /// Refuses, before the parser runs, what it would skip or draw only in part (module docs);
 /// says whether the document has arcs (path `A`, circles, ellipses, rounded rectangles).
 fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
@@ -706,6 +946,20 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
                 };
                 refuse_at(text, at, message)
             };
+            match attr.name() {
+                "d" | "points" | "viewBox" | "transform" | "x" | "y" | "width" | "height"
+                | "rx" | "ry" | "cx" | "cy" | "r" | "x1" | "y1" | "x2" | "y2" => {
+                    check_numbers(attr.name(), value, &placed)?
+                }
+                "style" => {
+                    for d in simplecss::DeclarationTokenizer::from(value) {
+                        if d.name == "transform" {
+                            check_numbers("transform", d.value, &placed)?;
+                        }
+                    }
+                }
+                _ => {}
+            }
             match (node.tag_name().name(), attr.name()) {
                 ("path", "d") => {
                     if let Err(e) = contours_from_svg_path(value, f64::MAX) {
@@ -773,6 +1027,120 @@ fn byte_at(text: &str, line: usize, column: usize) -> usize {
         offset += l.len();
     }
     text.len()
+}
+
+/// One subpath of a drawn path, mapped to user units: its control points (end points
+/// included, in order) and the bounding box of its curves.
+struct Subpath {
+    points: Vec<Vector2<f64>>,
+    lo: Vector2<f64>,
+    hi: Vector2<f64>,
+}
+
+impl Subpath {
+    fn start(p: Vector2<f64>) -> Subpath {
+        Subpath {
+            points: vec![p],
+            lo: p,
+            hi: p,
+        }
+    }
+
+    fn line_to(&mut self, p: Vector2<f64>) {
+        self.points.push(p);
+        (self.lo, self.hi) = (self.lo.inf(&p), self.hi.sup(&p));
+    }
+
+    /// A cubic from the last point: its box is its end points' and its extrema's, the roots
+    /// in `(0, 1)` of each coordinate's derivative `3[(1−t)²(c₁−a) + 2t(1−t)(c₂−c₁) + t²(p−c₂)]`.
+    fn cubic_to(&mut self, c1: Vector2<f64>, c2: Vector2<f64>, p: Vector2<f64>) {
+        let a = self.points.last().copied().unwrap_or(c1);
+        self.points.extend([c1, c2]);
+        self.line_to(p);
+        for k in 0..2 {
+            let (d0, d1, d2) = (c1[k] - a[k], c2[k] - c1[k], p[k] - c2[k]);
+            // d0(1−t)² + 2 d1 t(1−t) + d2 t² = (d0 − 2d1 + d2) t² + 2(d1 − d0) t + d0
+            let (qa, qb, qc) = (d0 - 2.0 * d1 + d2, 2.0 * (d1 - d0), d0);
+            let mut roots = [f64::NAN; 2];
+            if qa.abs() > 1e-12 * (qb.abs() + qc.abs()) {
+                let disc = qb * qb - 4.0 * qa * qc;
+                if disc >= 0.0 {
+                    let r = disc.sqrt();
+                    roots = [(-qb - r) / (2.0 * qa), (-qb + r) / (2.0 * qa)];
+                }
+            } else if qb != 0.0 {
+                roots[0] = -qc / qb;
+            }
+            for t in roots.into_iter().filter(|t| *t > 0.0 && *t < 1.0) {
+                let u = 1.0 - t;
+                let x = u * u * u * a[k]
+                    + 3.0 * u * u * t * c1[k]
+                    + 3.0 * u * t * t * c2[k]
+                    + t * t * t * p[k];
+                self.lo[k] = self.lo[k].min(x);
+                self.hi[k] = self.hi[k].max(x);
+            }
+        }
+    }
+}
+
+/// The subpaths of `data` mapped by `ts`; a subpath that draws nothing (a lone move) is left
+/// out. Quadratics are written as the cubics they are.
+fn subpaths(data: &usvg::tiny_skia_path::Path, ts: &Affine) -> Vec<Subpath> {
+    use usvg::tiny_skia_path::PathSegment as S;
+    let mut out: Vec<Subpath> = Vec::new();
+    let mut current: Option<Subpath> = None;
+    let mut flush = |current: &mut Option<Subpath>| {
+        if let Some(c) = current.take().filter(|c| c.points.len() > 1) {
+            out.push(c);
+        }
+    };
+    for segment in data.segments() {
+        if let S::MoveTo(p) = segment {
+            flush(&mut current);
+            current = Some(Subpath::start(ts.apply(p)));
+            continue;
+        }
+        let Some(c) = current.as_mut() else { continue };
+        match segment {
+            S::LineTo(p) => c.line_to(ts.apply(p)),
+            S::QuadTo(q, p) => {
+                let a = c.points.last().copied().unwrap_or_else(|| ts.apply(q));
+                let (q, p) = (ts.apply(q), ts.apply(p));
+                c.cubic_to(a + (q - a) * (2.0 / 3.0), p + (q - p) * (2.0 / 3.0), p);
+            }
+            S::CubicTo(c1, c2, p) => c.cubic_to(ts.apply(c1), ts.apply(c2), ts.apply(p)),
+            S::MoveTo(_) | S::Close => {}
+        }
+    }
+    flush(&mut current);
+    out
+}
+
+/// The contours of a filled path's subpaths (`filled`, each closed) or, for the subpaths
+/// along one line (`flat`), their centre lines (`lines`) if the path is stroked, or nothing.
+fn pick_subpaths(
+    filled: Vec<Contour>,
+    lines: Vec<Contour>,
+    flat: &[bool],
+    stroked: bool,
+) -> Vec<Contour> {
+    if filled.len() == flat.len() && lines.len() == flat.len() {
+        return filled
+            .into_iter()
+            .zip(lines)
+            .zip(flat)
+            .filter_map(|((c, l), &f)| match f {
+                false => Some(c),
+                true => stroked.then_some(l),
+            })
+            .collect();
+    }
+    // the flattener left out a subpath the control points kept (one of zero length)
+    filled
+        .into_iter()
+        .filter(|c| !encloses_nothing(&c.points))
+        .collect()
 }
 
 /// Whether the points of a filled subpath all lie on one line (to a few units of rounding of

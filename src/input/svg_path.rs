@@ -48,6 +48,7 @@ const WHAT: &str = "SVG path";
 /// finite; [`Error::TooLarge`] beyond [`crate::error::MAX_ELEMENTS`] points.
 pub fn contours_from_svg_path(d: &str, tolerance: f64) -> Result<Vec<Contour>> {
     let mut pen = Flattener::new(tolerance)?;
+    let d = &normalized_path_data(d);
     draw_path_data(d, &mut pen).map_err(|(e, at)| place(e, d, at))?;
     Ok(pen.finish())
 }
@@ -95,6 +96,34 @@ fn draw_path_data(d: &str, pen: &mut Flattener) -> std::result::Result<(), (Erro
         }
     }
     Ok(())
+}
+
+/// Path data with every comma moved before the blanks that precede it (`A 1 1 0 1 , 0 2 0` →
+/// `A 1 1 0 1,  0 2 0`), so that every byte keeps its place: SVG's grammar gives those blanks
+/// no meaning, and the path grammar crate accepts a comma after an arc's flag only directly
+/// after the flag.
+pub fn normalized_path_data(d: &str) -> std::borrow::Cow<'_, str> {
+    let bytes = d.as_bytes();
+    if !bytes
+        .windows(2)
+        .any(|w| w[0].is_ascii_whitespace() && w[1] == b',')
+    {
+        return std::borrow::Cow::Borrowed(d);
+    }
+    let mut out = bytes.to_vec();
+    let mut k = 0;
+    while k < out.len() {
+        if out[k] == b',' {
+            let mut j = k;
+            while j > 0 && out[j - 1].is_ascii_whitespace() {
+                out.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        k += 1;
+    }
+    // only ASCII bytes moved: still UTF-8
+    std::borrow::Cow::Owned(String::from_utf8(out).unwrap_or_else(|_| d.to_string()))
 }
 
 /// The current point, the contour's start and the last control points for `S` and `T`,

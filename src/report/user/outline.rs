@@ -3,7 +3,7 @@
 //! of a font (`.ttf`, `.otf`).
 
 use crate::input::Contour;
-use crate::input::{contours_from_svg_path, points_from_csv, read_svg_document, Columns};
+use crate::input::{contours_from_svg_path, points_from_csv, Columns, SvgDocument};
 use crate::report::error::{Error, Result};
 use crate::study::outline::size;
 use nalgebra::Vector2;
@@ -165,18 +165,26 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
             let text = read_text(path)?;
             let tolerance = match options.flatten {
                 Some(t) => t,
-                // the size from the path's end points (curves as chords), then the curves
-                None => FLATTEN_FRACTION * size(&contours_from_svg_path(&text, f64::MAX)?),
+                // the size from the path's end points (curves as chords), then from the
+                // curves flattened within that fraction of it: the curves' own size
+                None => {
+                    let chords = size(&contours_from_svg_path(&text, f64::MAX)?);
+                    match FLATTEN_FRACTION * chords {
+                        t if t > 0.0 => FLATTEN_FRACTION * size(&contours_from_svg_path(&text, t)?),
+                        t => t,
+                    }
+                }
             };
             Ok(contours_from_svg_path(&text, tolerance)?)
         }
         FileKind::Svg => {
             let text = read_text(path)?;
-            // the size from the end points (curves as chords) and the arcs' bound, which no
-            // flattening changes
-            let coarse = read_svg_document(&text, f64::MAX)?;
+            // read once; the size from the drawn curves (their extrema), and the arcs' bound,
+            // which no flattening changes
+            let document = SvgDocument::parse(&text)?;
+            let extent = document.extent()?;
             let tolerance = match options.flatten {
-                Some(t) if t.is_finite() && t > coarse.arcs => t - coarse.arcs,
+                Some(t) if t.is_finite() && t > extent.arcs => t - extent.arcs,
                 Some(t) if t > 0.0 && t.is_finite() => {
                     return Err(crate::error::Error::Parse {
                         what: "SVG flattening tolerance",
@@ -184,15 +192,15 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
                         column: 1,
                         message: format!(
                             "{t:e} is below {:e}, the distance within which the SVG parser's cubics follow the document's arcs: give a larger tolerance",
-                            coarse.arcs
+                            extent.arcs
                         ),
                     }
                     .into())
                 }
                 Some(t) => t,
-                None => FLATTEN_FRACTION * size(&coarse.into_contours()),
+                None => FLATTEN_FRACTION * extent.size(),
             };
-            Ok(read_svg_document(&text, tolerance)?.into_contours())
+            Ok(document.outline(tolerance)?.into_contours())
         }
         FileKind::Font => {
             let ch = options.glyph.ok_or(crate::error::Error::Parse {
