@@ -35,7 +35,7 @@
 
 use super::clip::FillRule;
 use super::flatten::{Contour, Flattener};
-use super::svg_limits::{check_css, check_entities, check_numbers, check_placement, refuse_at};
+use super::svg_limits::{check_attribute, check_css, check_entities, check_placement, refuse_at};
 use super::svg_path::{contours_from_svg_path, normalized_path_data};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix2, Vector2};
@@ -935,8 +935,8 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
                 continue;
             }
             let value = attr.value();
-            let value_at = attr.range_value().start;
             // the value's text as written: equal to the value unless it holds references
+            let value_at = attr.range_value().start;
             let verbatim = text.get(attr.range_value()) == Some(value);
             let placed = |offset: usize, message: String| {
                 let at = if verbatim {
@@ -946,20 +946,7 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
                 };
                 refuse_at(text, at, message)
             };
-            match attr.name() {
-                "d" | "points" | "viewBox" | "transform" | "x" | "y" | "width" | "height"
-                | "rx" | "ry" | "cx" | "cy" | "r" | "x1" | "y1" | "x2" | "y2" => {
-                    check_numbers(attr.name(), value, &placed)?
-                }
-                "style" => {
-                    for d in simplecss::DeclarationTokenizer::from(value) {
-                        if d.name == "transform" {
-                            check_numbers("transform", d.value, &placed)?;
-                        }
-                    }
-                }
-                _ => {}
-            }
+            check_attribute(attr.name(), value, &placed)?;
             match (node.tag_name().name(), attr.name()) {
                 ("path", "d") => {
                     if let Err(e) = contours_from_svg_path(value, f64::MAX) {
@@ -977,18 +964,8 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
                     }
                 }
                 ("polygon" | "polyline", "points") => {
-                    let mut count = 0usize;
-                    for n in svgtypes::NumberListParser::from(value) {
-                        if n.is_err() {
-                            return Err(placed(0, format!("the points {value:?} cannot be read")));
-                        }
-                        count += 1;
-                    }
-                    if count % 2 == 1 {
-                        return Err(placed(
-                            0,
-                            format!("the points list has an odd count of numbers ({count})"),
-                        ));
+                    if let Some(message) = points_error(value) {
+                        return Err(placed(0, message));
                     }
                 }
                 (_, "transform") if svgtypes::Transform::from_str(value).is_err() => {
@@ -1012,6 +989,19 @@ fn check_elements(doc: &roxmltree::Document) -> Result<bool> {
         }
     }
     Ok(arcs)
+}
+
+/// What is wrong with a `points` list, if anything: a number that cannot be read, or an odd
+/// count of numbers.
+fn points_error(value: &str) -> Option<String> {
+    let mut count = 0usize;
+    for n in svgtypes::NumberListParser::from(value) {
+        if n.is_err() {
+            return Some(format!("the points {value:?} cannot be read"));
+        }
+        count += 1;
+    }
+    (count % 2 == 1).then(|| format!("the points list has an odd count of numbers ({count})"))
 }
 
 /// The byte offset of 1-based `line` and `column` (characters) in `text`.

@@ -236,13 +236,31 @@ fn expanded<'a>(
     size
 }
 
-/// Refuses a number of the document's geometry beyond [`MAX_SVG_NUMBER`] (module docs):
-/// `value` is attribute `name`'s (or a `style` declaration's) value, placed by `placed`.
-pub(crate) fn check_numbers(
+/// Refuses a number of attribute `name` beyond [`MAX_SVG_NUMBER`] if it holds geometry, a
+/// transform or a `style` with a `transform` declaration (module docs).
+pub(crate) fn check_attribute(
     name: &str,
     value: &str,
     placed: &dyn Fn(usize, String) -> Error,
 ) -> Result<()> {
+    match name {
+        "d" | "points" | "viewBox" | "transform" | "x" | "y" | "width" | "height" | "rx" | "ry"
+        | "cx" | "cy" | "r" | "x1" | "y1" | "x2" | "y2" => check_numbers(name, value, placed),
+        "style" => {
+            for d in simplecss::DeclarationTokenizer::from(value) {
+                if d.name == "transform" {
+                    check_numbers("transform", d.value, placed)?;
+                }
+            }
+            Ok(())
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Refuses a number of the document's geometry beyond [`MAX_SVG_NUMBER`] (module docs):
+/// `value` is attribute `name`'s (or a `style` declaration's) value, placed by `placed`.
+fn check_numbers(name: &str, value: &str, placed: &dyn Fn(usize, String) -> Error) -> Result<()> {
     let too_large = |x: f64| x.is_nan() || x.abs() > MAX_SVG_NUMBER;
     let beyond = |x: f64| {
         placed(
