@@ -35,7 +35,9 @@
 
 use super::clip::FillRule;
 use super::flatten::{Contour, Flattener};
-use super::svg_limits::{check_attribute, check_css, check_entities, check_placement, refuse_at};
+use super::svg_limits::{
+    check_attribute, check_css, check_entities, check_placement, element_name, refuse_at,
+};
 use super::svg_path::{contours_from_svg_path, normalized_path_data};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix2, Vector2};
@@ -529,10 +531,7 @@ impl Reader<'_, '_> {
     /// `<path id="a">` (or the tag alone) for the element with this id.
     fn named(&self, id: &str) -> String {
         match self.element(id) {
-            Some(node) => match node.attribute("id") {
-                Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
-                None => format!("<{}>", node.tag_name().name()),
-            },
+            Some(node) => element_name(node),
             None if !id.is_empty() => format!("the path {id:?}"),
             None => "a path".to_string(),
         }
@@ -837,10 +836,7 @@ impl Reader<'_, '_> {
                 message.to_string(),
             );
         };
-        let named = match node.attribute("id") {
-            Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
-            None => format!("<{}>", node.tag_name().name()),
-        };
+        let named = element_name(node);
         refuse_at(self.text, node.range().start, format!("{named}: {message}"))
     }
 

@@ -50,6 +50,14 @@ pub const MAX_CSS_WORK: u64 = 20_000_000;
 
 const WHAT: &str = "SVG document";
 
+/// How a refusal names an element: `<path id="a">`, or `<path>` without an id.
+pub(crate) fn element_name(node: roxmltree::Node) -> String {
+    match node.attribute("id") {
+        Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
+        None => format!("<{}>", node.tag_name().name()),
+    }
+}
+
 /// A refusal of the document placed at byte `at` of its text.
 pub(crate) fn refuse_at(text: &str, at: usize, message: String) -> Error {
     let (line, column) = position(text, at);
@@ -405,10 +413,7 @@ pub(crate) fn check_placement(doc: &roxmltree::Document) -> Result<()> {
     }
     if placed.reach.is_nan() || placed.reach > MAX_PLACED_COORDINATE {
         let node = doc.get_node(placed.at).unwrap_or(root);
-        let named = match node.attribute("id") {
-            Some(id) => format!("<{} id={id:?}>", node.tag_name().name()),
-            None => format!("<{}>", node.tag_name().name()),
-        };
+        let named = element_name(node);
         return Err(refuse_at(
             doc.input_text(),
             node.range().start,
