@@ -148,7 +148,7 @@ pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> 
 ///
 /// # Errors
 /// As [`FileKind::of`], [`read_text`], [`points_from_csv`],
-/// [`read_svg_document`], [`contours_from_svg_path`] and
+/// [`SvgDocument::parse`], [`SvgDocument::outline`], [`contours_from_svg_path`] and
 /// [`crate::input::font::glyph`];
 /// [`crate::error::Error::Parse`] for a font without `options.glyph`.
 pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> {
