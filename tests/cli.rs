@@ -474,8 +474,14 @@ fn fewest_on_a_paper_shape_prints_table_i_counts_and_writes_a_table_and_figures(
     assert_eq!(
         files_in(dir.path()),
         [
+            "parabola-1-bspline-curve.svg",
+            "parabola-1-bspline-parameters.csv",
+            "parabola-1-bspline-points.csv",
             "parabola-1-bspline.png",
             "parabola-1-bspline.svg",
+            "parabola-1-cubic-curve.svg",
+            "parabola-1-cubic-parameters.csv",
+            "parabola-1-cubic-points.csv",
             "parabola-1-cubic.png",
             "parabola-1-cubic.svg",
             "parabola-1-fewest.csv",
@@ -483,6 +489,80 @@ fn fewest_on_a_paper_shape_prints_table_i_counts_and_writes_a_table_and_figures(
             "parabola-1-outline.csv"
         ]
     );
+}
+
+/// The path data `d="…"` of the first path of an SVG document.
+fn path_data(svg: &str) -> &str {
+    let start = svg.find(" d=\"").expect("a path") + 4;
+    let len = svg[start..].find('"').expect("its end");
+    &svg[start..start + len]
+}
+
+/// Issue 46: every answer of `fewest` is written (points, parameters, curve) and `fit` on
+/// those points with those parameters draws the same curve: for each method and contour,
+/// the `redraw` command of the parameters file, run as written, writes a path that is the
+/// contour's subpath of the answer's curve, number for number.
+#[test]
+fn fewest_writes_each_answer_and_fit_redraws_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("two.svg");
+    std::fs::write(
+        &svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 40 20"><circle cx="10" cy="10" r="8"/><path d="M24 4h12v12h-12z"/></svg>"#,
+    )
+    .unwrap();
+    stdout_of(&[
+        "fewest",
+        "--method",
+        "angular,cardinal,cubic,bspline,linear",
+        "--out",
+        dir.path().to_str().unwrap(),
+        svg.to_str().unwrap(),
+    ]);
+    for method in ["angular", "cardinal", "cubic", "bspline", "linear"] {
+        let read = |suffix: &str| {
+            std::fs::read_to_string(dir.path().join(format!("two-{method}-{suffix}")))
+                .unwrap_or_else(|e| panic!("two-{method}-{suffix}: {e}"))
+        };
+        let curve = read("curve.svg");
+        let whole = path_data(&curve);
+        let parameters = read("parameters.csv");
+        let mut rows = csv::Reader::from_reader(parameters.as_bytes());
+        let header = rows.headers().unwrap().clone();
+        let redraw = header.iter().position(|h| h == "redraw").unwrap();
+        let mut contours = 0;
+        for row in rows.records() {
+            let row = row.unwrap();
+            let words: Vec<&str> = row[redraw].split(' ').collect();
+            assert_eq!(words[..2], ["splinelab", "fit"], "{}", &row[redraw]);
+            let out = dir.path().join(format!("redraw-{method}-{contours}"));
+            let done = splinelab()
+                .current_dir(dir.path())
+                .args(&words[1..])
+                .arg("--out")
+                .arg(&out)
+                .output()
+                .unwrap();
+            assert!(
+                done.status.success(),
+                "{method}: {}: {}",
+                &row[redraw],
+                String::from_utf8_lossy(&done.stderr)
+            );
+            let stem = format!("two-{method}-points");
+            let again = std::fs::read_to_string(out.join(format!("{stem}-path.svg"))).unwrap();
+            let part = path_data(&again);
+            assert!(
+                whole.contains(part),
+                "{method}, contour {}: {part} is not in {whole}",
+                contours + 1
+            );
+            contours += 1;
+        }
+        assert_eq!(contours, 2, "{method}: {parameters}");
+        // the points file: one row a point, the contour first
+        assert!(read("points.csv").starts_with("contour,x,y\n"));
+    }
 }
 
 #[test]

@@ -9,7 +9,9 @@ use splinelab::interp::choice::{Family, SearchOptions};
 use splinelab::report::export;
 use splinelab::report::user::fewest;
 use splinelab::report::user::fit::{Fit, FormulaStyle};
-use splinelab::report::user::outline::{read_outline, read_points, ReadOptions};
+use splinelab::report::user::outline::{
+    read_contour_points, read_outline, read_points, ReadOptions,
+};
 use splinelab::report::user::surface::{BuiltIn, MeshFormat, PartitionSpec, SurfaceMesh};
 use splinelab::study::outline::{Progress, Tolerance};
 use splinelab::study::{self, table_i};
@@ -118,6 +120,10 @@ pub struct FitArgs {
     /// Output folder.
     #[arg(long, default_value = "out/fit")]
     out: PathBuf,
+    /// Only the rows of this contour, by the CSV's `contour` column (the answers `fewest`
+    /// writes, NAME-METHOD-points.csv); x and y are then named columns (`x,y` by default).
+    #[arg(long, value_name = "K")]
+    contour: Option<u32>,
     /// The points: a CSV file (`x,y` rows; a header, `;` or blanks are fine).
     points: PathBuf,
 }
@@ -179,8 +185,8 @@ pub struct FewestArgs {
     /// The outline: CSV points, an SVG document, SVG path data (.path) or a font (.ttf/.otf).
     /// An SVG document's outline is what a viewer draws, in its viewBox's units: a filled
     /// shape's boundary, a stroke's centre line (not its width); hidden content and
-    /// definitions are not outline; text, images, masks and clips that cut the drawing are
-    /// refused, naming the element (convert text to paths first).
+    /// definitions are not outline; clips are applied; text, images and masks are refused,
+    /// naming the element (convert text to paths first).
     outline: Option<PathBuf>,
 }
 
@@ -246,8 +252,12 @@ fn stem(path: &Path) -> String {
 
 /// `splinelab fit`.
 pub fn fit(args: FitArgs) -> anyhow::Result<()> {
-    let points = read_points(&args.points, &columns(args.columns.as_deref()))
-        .with_context(|| format!("reading {}", args.points.display()))?;
+    let columns = columns(args.columns.as_deref());
+    let points = match args.contour {
+        Some(k) => read_contour_points(&args.points, &columns, k),
+        None => read_points(&args.points, &columns),
+    }
+    .with_context(|| format!("reading {}", args.points.display()))?;
     let method = match args.method {
         MethodName::Angular => Method::Angular,
         MethodName::Cardinal => Method::Cardinal { a: args.a },
@@ -412,6 +422,24 @@ pub fn fewest(args: FewestArgs) -> anyhow::Result<()> {
         let stem = format!("{name}-{}", fewest::family_name(family));
         for path in figure.save(&args.out, &stem)? {
             crate::say(format_args!("wrote {}", path.display()))?;
+        }
+    }
+    // each answer as points, parameters and curve, for `fit` and other tools
+    for method in &found.methods {
+        let stem = format!("{name}-{}", fewest::family_name(method.family));
+        let points_file = format!("{stem}-points.csv");
+        let points = fewest::answer_points(&points_file, method)?;
+        let parameters = fewest::answer_parameters(&stem, method, found.size, &points_file)?;
+        let svg = fewest::answer_svg(method, found.size)?;
+        for (file, bytes) in [
+            (points_file.clone(), splinelab::report::table::csv(&points)?),
+            (
+                format!("{stem}-parameters.csv"),
+                splinelab::report::table::csv(&parameters)?,
+            ),
+            (format!("{stem}-curve.svg"), svg.into_bytes()),
+        ] {
+            write(&args.out.join(file), &bytes)?;
         }
     }
     crate::say(table.to_markdown()?.trim_end())

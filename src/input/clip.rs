@@ -115,3 +115,100 @@ fn crosses(p: Vector2<f64>, q: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -
     let (d3, d4) = (side(p, q, a), side(p, q, b));
     d1 * d2 < 0.0 && d3 * d4 < 0.0
 }
+
+/// A clip region as simple shapes (each an outer contour and its holes, none overlapping):
+/// the union of `region`'s filled paths, each filled by its own rule (i_overlay's boolean
+/// operations, on an `i64` grid).
+pub(crate) type Shapes = Vec<Vec<Vec<[f64; 2]>>>;
+
+/// The contours of `contours` as i_overlay's closed contours (the repeated closing point off).
+fn rings(contours: &[Contour]) -> Vec<Vec<[f64; 2]>> {
+    contours
+        .iter()
+        .map(|c| {
+            let mut ring: Vec<[f64; 2]> = c.points.iter().map(|p| [p.x, p.y]).collect();
+            if ring.len() > 1 && ring.first() == ring.last() {
+                ring.pop();
+            }
+            ring
+        })
+        .filter(|r| r.len() >= 3)
+        .collect()
+}
+
+fn overlay_rule(rule: FillRule) -> i_overlay::core::fill_rule::FillRule {
+    match rule {
+        FillRule::NonZero => i_overlay::core::fill_rule::FillRule::NonZero,
+        FillRule::EvenOdd => i_overlay::core::fill_rule::FillRule::EvenOdd,
+    }
+}
+
+/// The union of the filled regions `region` (module docs of [`Shapes`]).
+pub(crate) fn region_shapes(region: &[(Vec<Contour>, FillRule)]) -> Shapes {
+    use i_overlay::float::simplify::SimplifyShape;
+    let mut all: Shapes = Vec::new();
+    for (contours, rule) in region {
+        all.extend(rings(contours).simplify_shape_as::<i64>(overlay_rule(*rule)));
+    }
+    // simple shapes of consistent orientation: the non-zero rule is their union
+    all.simplify_shape_as::<i64>(i_overlay::core::fill_rule::FillRule::NonZero)
+}
+
+/// The closed contours of `shapes` (outer contours and holes), each closed by its first point.
+fn contours_of(shapes: Shapes) -> Vec<Contour> {
+    shapes
+        .into_iter()
+        .flatten()
+        .filter(|ring| ring.len() >= 3)
+        .map(|ring| {
+            let mut points: Vec<Vector2<f64>> =
+                ring.iter().map(|p| Vector2::new(p[0], p[1])).collect();
+            points.push(points[0]);
+            Contour {
+                points,
+                closed: true,
+            }
+        })
+        .collect()
+}
+
+/// What a viewer fills of `contours` (filled by `rule`) inside the clip region `clip`: the
+/// boundary of their intersection, as closed contours.
+pub(crate) fn clipped_fill(contours: &[Contour], rule: FillRule, clip: &Shapes) -> Vec<Contour> {
+    use i_overlay::core::overlay_rule::OverlayRule;
+    use i_overlay::float::simplify::SimplifyShape;
+    use i_overlay::float::single::SingleFloatOverlay;
+    let filled = rings(contours).simplify_shape_as::<i64>(overlay_rule(rule));
+    contours_of(filled.overlay_as::<i64>(
+        clip,
+        OverlayRule::Intersect,
+        i_overlay::core::fill_rule::FillRule::NonZero,
+    ))
+}
+
+/// The parts of the centre lines `contours` inside the clip region `clip` (its edges
+/// included), as open contours.
+pub(crate) fn clipped_lines(contours: &[Contour], clip: &Shapes) -> Vec<Contour> {
+    use i_overlay::float::clip::FloatClip;
+    use i_overlay::string::clip::ClipRule;
+    let rule = ClipRule {
+        invert: false,
+        boundary_included: true,
+    };
+    let mut out = Vec::new();
+    for c in contours {
+        let line: Vec<[f64; 2]> = c.points.iter().map(|p| [p.x, p.y]).collect();
+        let pieces =
+            line.clip_by_as::<i64>(clip, i_overlay::core::fill_rule::FillRule::NonZero, rule);
+        out.extend(
+            pieces
+                .into_iter()
+                .filter(|p| p.len() >= 2)
+                .map(|p| Contour {
+                    points: p.iter().map(|q| Vector2::new(q[0], q[1])).collect(),
+                    closed: false,
+                }),
+        );
+    }
+    out
+}

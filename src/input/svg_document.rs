@@ -29,9 +29,15 @@
 //!   `<use>` of another file (not loaded), path
 //!   data, `points`, a `transform` or a shape's length that cannot be read (a viewer draws a
 //!   path up to its first error and skips a bad transform; a reader of outlines refuses
-//!   them), a `mask` on drawn content, a `clip-path` that cuts the drawn outline (a clip that
-//!   leaves every drawn point inside it changes nothing and is accepted), a document with
-//!   nothing drawn. Filters (blur, shadows) are not read: they change colours, not outlines.
+//!   them), a `mask` on drawn content, a clip path clipped again, a document with nothing
+//!   drawn. Filters (blur, shadows) are not read: they change colours, not outlines.
+//! - **Clips** (`clip-path`, and the viewport of a nested `<svg>`, a `<symbol>` or a marker)
+//!   are applied: a clip that leaves every drawn point inside it changes nothing; otherwise a
+//!   filled path's outline is the boundary of its fill's intersection with the clip region
+//!   (the union of the clip's paths, each by its `clip-rule`), and a stroked path's is its
+//!   centre line cut at the region's edge, by the polygon boolean operations of i_overlay (on
+//!   an `i64` grid over the shapes' extent). The size of clipped content is its extent cut to
+//!   the clip's box.
 
 use super::clip::FillRule;
 use super::flatten::{Contour, Flattener};
@@ -311,10 +317,7 @@ impl<'a> SvgDocument<'a> {
             tolerance,
             has_arcs: self.has_arcs,
             arc_bound: 0.0,
-            bounds: (
-                Vector2::repeat(f64::INFINITY),
-                Vector2::repeat(f64::NEG_INFINITY),
-            ),
+            bounds: EMPTY_BOX,
             dropped: Vec::new(),
             out: Vec::new(),
         }
@@ -487,6 +490,12 @@ fn viewport_to_user(doc: &roxmltree::Document, tree: &usvg::Tree) -> Option<Affi
     })
 }
 
+/// A box that holds nothing (its low corner above its high one).
+const EMPTY_BOX: (Vector2<f64>, Vector2<f64>) = (
+    Vector2::new(f64::INFINITY, f64::INFINITY),
+    Vector2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+);
+
 struct Reader<'a, 'input> {
     text: &'a str,
     doc: &'a roxmltree::Document<'input>,
@@ -506,7 +515,9 @@ struct Reader<'a, 'input> {
 impl Reader<'_, '_> {
     /// Refuses a document that draws nothing, naming what was dropped and why.
     fn nothing_drawn(&self) -> Result<()> {
-        if self.bounds.0.x <= self.bounds.1.x {
+        // flattened, something must be left once the clips are applied
+        let left = self.tolerance.is_none() || !self.out.is_empty();
+        if self.bounds.0.x <= self.bounds.1.x && left {
             return Ok(());
         }
         let why = match self.dropped.len() {
@@ -545,13 +556,23 @@ impl Reader<'_, '_> {
             self.dropped.push(format!("{named} has opacity 0"));
             return Ok(());
         }
-        if group.mask().is_some() {
-            return Err(self.refuse_id(
-                group.id(),
+        if let Some(mask) = group.mask() {
+            // the masked element, else the mask
+            let at = self
+                .element(group.id())
+                .or_else(|| self.referencing("mask", mask.id()))
+                .or_else(|| self.element(mask.id()));
+            return Err(self.refuse_node(
+                at,
                 "a mask changes what is drawn: the outline of masked content is not read (apply the mask in the drawing program, or remove it)",
             ));
         }
         let first = self.out.len();
+        // the bounds of clipped content are cut to the clip's box below
+        let outer = self.bounds;
+        if group.clip_path().is_some() {
+            self.bounds = EMPTY_BOX;
+        }
         for child in group.children() {
             match child {
                 usvg::Node::Group(g) => self.group(g, &ts)?,
@@ -565,9 +586,35 @@ impl Reader<'_, '_> {
             }
         }
         if let Some(clip) = group.clip_path() {
-            self.check_clip(clip, &ts, first)?;
+            self.apply_clip(clip, &ts, first)?;
+            let clip_ts = ts.then_inner(&Affine::of(clip.transform()));
+            let (lo, hi) = self.region_box(clip.root(), &clip_ts);
+            let inner = self.bounds;
+            self.bounds = outer;
+            let (lo, hi) = (inner.0.sup(&lo), inner.1.inf(&hi));
+            if lo.x <= hi.x && lo.y <= hi.y {
+                self.include((lo, hi));
+            }
         }
         Ok(())
+    }
+
+    /// The bounding box of the curves of a clip path's visible paths (their extrema).
+    fn region_box(&self, group: &usvg::Group, ts: &Affine) -> (Vector2<f64>, Vector2<f64>) {
+        let mut b = EMPTY_BOX;
+        for child in group.children() {
+            let (lo, hi) = match child {
+                usvg::Node::Group(g) => {
+                    self.region_box(g, &ts.then_inner(&Affine::of(g.transform())))
+                }
+                usvg::Node::Path(p) if p.is_visible() => subpaths(p.data(), ts)
+                    .iter()
+                    .fold(EMPTY_BOX, |(lo, hi), s| (lo.inf(&s.lo), hi.sup(&s.hi))),
+                _ => continue,
+            };
+            b = (b.0.inf(&lo), b.1.sup(&hi));
+        }
+        b
     }
 
     /// Reads one path if it is drawn.
@@ -714,9 +761,13 @@ impl Reader<'_, '_> {
         Ok(pen.finish())
     }
 
-    /// Accepts a clip path that leaves every contour drawn since `first` inside it; refuses
-    /// one that cuts the drawn outline, naming the clipped element and the clip.
-    fn check_clip(&mut self, clip: &usvg::ClipPath, ts: &Affine, first: usize) -> Result<()> {
+    /// Applies a clip path to every path drawn since `first` (module docs): nothing changes
+    /// where it leaves their contours whole; otherwise a filled path becomes the boundary of
+    /// its fill's intersection with the clip region, and a stroked one its centre line's
+    /// parts inside the region ([`super::clip`], i_overlay's boolean operations), a path
+    /// left with nothing dropped, saying so. A clip path clipped again is refused, naming the
+    /// clipped element and the clip.
+    fn apply_clip(&mut self, clip: &usvg::ClipPath, ts: &Affine, first: usize) -> Result<()> {
         // a clip the document names, or the viewport the parser clips a nested <svg>, a
         // <symbol> or a marker to
         let what = if self.element(clip.id()).is_some() {
@@ -724,12 +775,13 @@ impl Reader<'_, '_> {
         } else {
             "the viewport of a nested <svg>, <symbol> or marker".to_string()
         };
-        // the element that names the clip, else the first clipped path with an id, else the clip
-        let at = self
-            .referencing(clip.id())
-            .or_else(|| self.out[first..].iter().find_map(|p| self.element(&p.id)))
-            .or_else(|| self.element(clip.id()));
         if clip.clip_path().is_some() {
+            // the element that names the clip, else the first clipped path with an id, else
+            // the clip
+            let at = self
+                .referencing("clip-path", clip.id())
+                .or_else(|| self.out[first..].iter().find_map(|p| self.element(&p.id)))
+                .or_else(|| self.element(clip.id()));
             return Err(self.refuse_node(
                 at,
                 &format!("{what} is clipped again: not read (simplify the clipping in the drawing program)"),
@@ -745,11 +797,39 @@ impl Reader<'_, '_> {
             .iter()
             .flat_map(|p| p.contours.iter())
             .collect();
-        if let Err(why) = super::clip::contains(&region, &drawn) {
-            return Err(self.refuse_node(
-                at,
-                &format!("{what} cuts the drawn outline ({why}); the outline of clipped content is not read: apply the clip in the drawing program (in Inkscape: Object ▸ Clip ▸ Release, then Path ▸ Intersection) or remove it"),
-            ));
+        if super::clip::contains(&region, &drawn).is_ok() {
+            return Ok(());
+        }
+        let shapes = super::clip::region_shapes(&region);
+        for path in self.out.split_off(first) {
+            let mut kept = Vec::new();
+            if let Some(rule) = path.fill {
+                let contours = super::clip::clipped_fill(&path.contours, rule, &shapes);
+                if !contours.is_empty() {
+                    kept.push(DrawnPath {
+                        id: path.id.clone(),
+                        contours,
+                        fill: Some(rule),
+                        stroke: None,
+                    });
+                }
+            }
+            if let Some(stroke) = &path.stroke {
+                let contours = super::clip::clipped_lines(&path.contours, &shapes);
+                if !contours.is_empty() {
+                    kept.push(DrawnPath {
+                        id: path.id.clone(),
+                        contours,
+                        fill: None,
+                        stroke: Some(stroke.clone()),
+                    });
+                }
+            }
+            if kept.is_empty() {
+                let named = self.named(&path.id);
+                self.dropped.push(format!("{named} lies outside {what}"));
+            }
+            self.out.extend(kept);
         }
         Ok(())
     }
@@ -807,17 +887,17 @@ impl Reader<'_, '_> {
         found.next().is_none().then_some(first)
     }
 
-    /// The one element whose `clip-path` (attribute or style) names `#id`.
-    fn referencing(&self, id: &str) -> Option<roxmltree::Node<'_, '_>> {
+    /// The one element whose `property` (`clip-path`, `mask`; attribute or style) names `#id`.
+    fn referencing(&self, property: &str, id: &str) -> Option<roxmltree::Node<'_, '_>> {
         if id.is_empty() {
             return None;
         }
         let url = format!("#{id})");
         let names_it = |v: &str| v.replace(['"', '\'', ' '], "").contains(&url);
         let mut found = self.doc.descendants().filter(|n| {
-            n.attribute("clip-path").is_some_and(names_it)
+            n.attribute(property).is_some_and(names_it)
                 || n.attribute("style")
-                    .is_some_and(|v| v.contains("clip-path") && names_it(v))
+                    .is_some_and(|v| v.contains(property) && names_it(v))
         });
         let first = found.next()?;
         found.next().is_none().then_some(first)

@@ -103,11 +103,11 @@ fn accurate_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     let dot = dx * wx + dy * wy;
     let back = if len2 == 0.0 || dot <= 0.0 {
         // the foot is a: |p − a|
-        (dx + ex).hypot(dy + ey)
+        norm(dx + ex, dy + ey)
     } else if dot >= len2 {
         // the foot is b: |p − b| = |d − w|
         let (gx, gy) = (two_diff(dx, wx), two_diff(dy, wy));
-        (gx.0 + (gx.1 + ex - fx)).hypot(gy.0 + (gy.1 + ey - fy))
+        norm(gx.0 + (gx.1 + ex - fx), gy.0 + (gy.1 + ey - fy))
     } else {
         // inside: |d × w| / |w|, the cross product from exact products and the errors'
         // first-order terms
@@ -115,9 +115,17 @@ fn accurate_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
         let (p2, q2) = two_prod(dy, wx);
         let (s, r) = two_diff(p1, p2);
         let cross = s + (r + q1 - q2 + (ex * wy + dx * fy - ey * wx - dy * fx));
-        cross.abs() / (wx + fx).hypot(wy + fy)
+        cross.abs() / norm(wx + fx, wy + fy)
     };
     back / k
+}
+
+/// `√(x² + y²)` for `|x|, |y| ≤ 4` (the scaled differences of [`accurate_distance`]): the
+/// plain formula, as accurate as `hypot` to a rounding, where the larger square is a normal
+/// number (the smaller's underflow is then far below its rounding); `hypot` below.
+#[inline]
+fn norm(x: f64, y: f64) -> f64 {
+    x.hypot(y)
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -352,6 +360,25 @@ impl SegmentTree {
         (best * u, at)
     }
 
+    /// Whether `segment_distance(p, a, b) < max` for segment `s` from `a` to `b`, decided by
+    /// the plain formula where it is farther than its reach from `max` (as in
+    /// [`SegmentTree::nearest`]), by [`segment_distance`] otherwise: the same answer, cheaper.
+    fn nearer_than(&self, p: Vector2<f64>, s: usize, max: f64) -> bool {
+        let (a, b) = (self.points[s], self.points[s + 1]);
+        let size = self.extent.max(p.amax());
+        let k = 1.0 / power_near(size);
+        let reach = CHEAP_REACH * f64::EPSILON * (size * k);
+        let c = cheap_distance2(p * k, a * k, b * k).sqrt();
+        let m = max * k;
+        if c + reach < m {
+            true
+        } else if c - reach >= m {
+            false
+        } else {
+            segment_distance(p, a, b) < max
+        }
+    }
+
     /// The one-sided distance `maxᵢ min_{s} |from[i] − s|` from the points `from` to the
     /// polyline, and the index of a point where it is reached (`None` for no point). The
     /// points are visited spread out first, then in order with the previous point's nearest
@@ -380,8 +407,7 @@ impl SegmentTree {
             let p = from[i];
             if at.is_some() && i % SPREAD != 0 {
                 if let Some(h) = hint {
-                    let near = (h..=(h + 1).min(last))
-                        .find(|&s| segment_distance(p, self.points[s], self.points[s + 1]) < max);
+                    let near = (h..=(h + 1).min(last)).find(|&s| self.nearer_than(p, s, max));
                     if near.is_some() {
                         hint = near;
                         continue;

@@ -167,14 +167,19 @@ pub fn save(path: &Path, bytes: &[u8]) -> Result<()> {
 }
 
 /// The SVG path data of cubic Bézier segments: `M x y C x₁ y₁ x₂ y₂ x₃ y₃ …`, a new `M`
-/// where a segment does not start at the previous one's end, `Z` where the path returns to its
-/// start. Coordinates are the curve's own (SVG's `y` points down: [`svg_document`] flips it).
+/// where a segment does not start at the previous one's end, `Z` where a subpath of more than
+/// one segment returns to its start. Coordinates are the curve's own (SVG's `y` points down:
+/// [`svg_document`] flips it).
 pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
     let mut d = String::new();
     let mut at: Option<nalgebra::Vector2<f64>> = None;
     let mut start = None;
+    let mut pieces = 0usize;
     for s in segments {
         if at != Some(s[0]) {
+            if at.is_some() && at == start && pieces > 1 {
+                d.push_str(" Z");
+            }
             let _ = write!(
                 d,
                 "{}M {}",
@@ -182,7 +187,9 @@ pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
                 numbers(s[0].as_slice())
             );
             start = Some(s[0]);
+            pieces = 0;
         }
+        pieces += 1;
         let _ = write!(
             d,
             " C {} {} {}",
@@ -192,7 +199,7 @@ pub fn svg_path(segments: &[CubicSegment<2>]) -> String {
         );
         at = Some(s[3]);
     }
-    if at.is_some() && at == start && segments.len() > 1 {
+    if at.is_some() && at == start && pieces > 1 {
         d.push_str(" Z");
     }
     d

@@ -136,7 +136,7 @@ impl MethodStudy {
         let rank = |m: &Minimality| match m {
             Minimality::MethodMinimum => 0,
             Minimality::LowerBound { .. } | Minimality::Optimum { .. } => 1,
-            Minimality::Searched => 2,
+            Minimality::Searched | Minimality::Candidates { .. } => 2,
             Minimality::Bisected => 3,
             Minimality::NotMet => 4,
         };

@@ -173,8 +173,12 @@ fn svg_document_cases() -> Vec<Case> {
                     "a mask",
                 ),
                 (
-                    format!("<svg {NS}><clipPath id='c'><circle r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
-                    "cuts the drawn outline",
+                    format!("<svg {NS}><clipPath id='d'><rect width='1' height='1'/></clipPath><clipPath id='c' clip-path='url(#d)'><circle r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
+                    "is clipped again",
+                ),
+                (
+                    format!("<svg {NS}><clipPath id='c'><circle cx='9' r='1'/></clipPath><rect width='2' height='2' clip-path='url(#c)'/></svg>"),
+                    "lies outside the clip path",
                 ),
                 (format!("<svg {NS} width='0' height='1'><rect width='1' height='1'/></svg>"), ""),
                 (format!("<svg {NS} viewBox='-inf -inf inf inf'><rect width='1' height='1'/></svg>"), ""),

@@ -60,8 +60,18 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
         ..options.clone()
     };
     if !options.every_count_below {
-        // counts bisected: from the polygon's count down
-        return search(&from_polygon);
+        // counts bisected: from the polygon's count down, and on its own (its rise from the
+        // method's minimum and the starts pruned from its own configurations reach counts
+        // that starts pruned from the polygon miss), the fewer points kept
+        let from = search(&from_polygon)?;
+        let own = search(options)?;
+        let fewer =
+            own.choice.within_tolerance && own.choice.measure.counted < from.choice.measure.counted;
+        return Ok(if fewer {
+            merged(own, from)
+        } else {
+            merged(from, own)
+        });
     }
     // every count searched: on its own first, again below the polygon's count if it ends
     // above it (or finds nothing within the tolerance)
@@ -70,6 +80,27 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
         return Ok(found);
     }
     search(&from_polygon)
+}
+
+/// The answer of `kept` with the evidence of both searches: every count either searched in
+/// full (the better attempt where both searched it), the evaluations of both.
+fn merged(kept: Search, other: Search) -> Search {
+    let mut attempts = kept.attempts;
+    for a in other.attempts {
+        match attempts.iter_mut().find(|b| b.counted == a.counted) {
+            Some(b) if a.within_tolerance && !b.within_tolerance => *b = a,
+            Some(_) => {}
+            None => attempts.push(a),
+        }
+    }
+    attempts.sort_by_key(|a| a.counted);
+    let mut choice = kept.choice;
+    choice.evaluations = choice.evaluations.saturating_add(other.choice.evaluations);
+    Search {
+        choice,
+        attempts,
+        minimality: kept.minimality,
+    }
 }
 
 /// The polygon's exact optimum drawn by `family`, when the family contains the polygon (module

@@ -296,6 +296,13 @@ pub enum Minimality {
         /// The error every polygon with fewer points exceeds.
         bound: f64,
     },
+    /// The polygon's fewest over candidates up to `spacing` apart along the outline, too far
+    /// apart for [`Minimality::Optimum`]'s argument (an outline too long for finer ones):
+    /// not proven.
+    Candidates {
+        /// The largest distance along the outline between consecutive candidates.
+        spacing: f64,
+    },
     /// Every lower count was searched with the full budget and none met the tolerance: the
     /// fewest found, not proven.
     Searched,
@@ -318,8 +325,14 @@ impl Minimality {
                 "proven (exact optimum): fewer points err > {:.3} %",
                 100.0 * bound / size
             ),
-            Minimality::Searched => "fewest found (every lower count searched)".into(),
-            Minimality::Bisected => "fewest found (lower counts bisected)".into(),
+            Minimality::Candidates { spacing } => format!(
+                "fewest over candidates {:.3} % apart (not proven)",
+                100.0 * spacing / size
+            ),
+            Minimality::Searched => {
+                "fewest found by a local search (every lower count searched, none within)".into()
+            }
+            Minimality::Bisected => "fewest found by a local search (lower counts bisected)".into(),
             Minimality::NotMet => "none within the tolerance".into(),
         }
     }

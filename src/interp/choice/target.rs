@@ -371,7 +371,12 @@ impl Target {
         }
     }
 
-    /// Whether the target is an exact shape (its parameter differs from arc length: the
+    /// Whether the target is an exact shape's (points are placed on the shape).
+    pub(super) fn is_exact_shape(&self) -> bool {
+        self.exact.is_some()
+    }
+
+    /// Whether the target is an exact shape whose parameter differs from arc length (the
     /// rectangle's does not).
     pub(super) fn has_own_parameter(&self) -> bool {
         matches!(&self.exact, Some((shape, _)) if !matches!(shape, Shape::Rectangle { .. }))

@@ -23,13 +23,15 @@
 
 use crate::input::Contour;
 use crate::interp::choice::Family;
+use crate::interp::methods::{CubicEnd, Interpolant, Method};
 use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::legend::parameter_legend;
 use crate::report::plot2d::Figure2d;
 use crate::report::table::Table;
+use crate::report::user::fit::Fit;
 use crate::report::{draw, Legend};
-use crate::study::outline::{ContourSearch, OutlineStudy};
+use crate::study::outline::{ContourSearch, MethodStudy, OutlineStudy};
 
 crate::record! {
     /// A row of the fewest-points table: one method.
@@ -78,6 +80,170 @@ pub fn outline_frame(id: &str, outline: &[Contour]) -> Result<crate::report::fra
         })
         .collect();
     crate::report::record::frame_of(id, &rows)
+}
+
+crate::record! {
+    /// A point of a method's answer on one contour.
+    struct AnswerPoint {
+        contour: u32 => "contour",
+        x: f64 => "x",
+        y: f64 => "y",
+    }
+}
+
+crate::record! {
+    /// One contour's answer: its parameters, and the command that draws it again.
+    struct AnswerRow {
+        contour: u32 => "contour",
+        closed: bool => "closed",
+        method: String => "method",
+        points: u32 => "points",
+        a: String => "a",
+        end: String => "end",
+        order: String => "order",
+        knots: String => "knots",
+        error_pct: f64 => "error_pct",
+        within: bool => "within_tolerance",
+        redraw: String => "redraw",
+    }
+}
+
+/// The contour number of the `k`-th contour (from 0) in the files: from 1.
+fn contour_number(k: usize) -> u32 {
+    u32::try_from(k + 1).unwrap_or(u32::MAX)
+}
+
+/// A method's answer as points (`id`): one row per point, `contour` (from 1), `x`, `y` —
+/// the points [`crate::interp::choice::Choice::points`] holds: a closed curve's without the
+/// repeats the method adds, an open Angular or cardinal curve's with its two guides (first
+/// and last), a B-spline's control polygon. `splinelab fewest` writes it as
+/// `NAME-METHOD-points.csv`; `splinelab fit --contour K` reads a contour of it back.
+///
+/// # Errors
+/// [`crate::report::Error::Table`] if the frame cannot be built (an internal error).
+pub fn answer_points(id: &str, method: &MethodStudy) -> Result<crate::report::frame::Frame> {
+    let rows: Vec<AnswerPoint> = method
+        .contours
+        .iter()
+        .enumerate()
+        .flat_map(|(k, c)| {
+            c.search.choice.points.iter().map(move |p| AnswerPoint {
+                contour: contour_number(k),
+                x: p.x,
+                y: p.y,
+            })
+        })
+        .collect();
+    crate::report::record::frame_of(id, &rows)
+}
+
+/// The tolerance within which [`answer_svg`] draws the curves as cubic Béziers, for an
+/// outline of `size`: 10⁻⁴ of it (what `splinelab fit` uses by default for its own curve),
+/// to two significant digits, so that the `redraw` command states it exactly in a few
+/// characters.
+pub fn answer_tolerance(size: f64) -> f64 {
+    let t = 1e-4 * size;
+    format!("{t:.1e}").parse().unwrap_or(t)
+}
+
+/// A method's answer as parameters (`id`): per contour whether it is closed, the method,
+/// the points as counted, the cardinal `a`, the cubic spline's end, the B-spline's order and
+/// knots, the error in % of the outline's size, and the `splinelab fit` command that draws the
+/// curve again from `points_file` (the [`answer_points`] file) with the Bézier tolerance of
+/// [`answer_svg`], so that its `-path.svg` is the same curve.
+///
+/// # Errors
+/// [`crate::report::Error::Table`] if the frame cannot be built (an internal error).
+pub fn answer_parameters(
+    id: &str,
+    method: &MethodStudy,
+    size: f64,
+    points_file: &str,
+) -> Result<crate::report::frame::Frame> {
+    let tolerance = answer_tolerance(size);
+    let rows: Vec<AnswerRow> = method
+        .contours
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let choice = &c.search.choice;
+            let closed = c.target.is_closed();
+            let (mut a, mut end, mut order, mut knots) =
+                (String::new(), String::new(), String::new(), String::new());
+            let mut flags = String::new();
+            match choice.method {
+                Method::Cardinal { a: value } => {
+                    a = format!("{value}");
+                    flags = format!(" --a {value}");
+                }
+                Method::Cubic { end: e } => {
+                    end = cubic_end_name(e).into();
+                    flags = format!(" --end {end}");
+                }
+                Method::BSpline { order: o } => {
+                    order = o.to_string();
+                    flags = format!(" --order {o}");
+                    if let Ok(Interpolant::BSpline(curve)) =
+                        choice.method.curve(&choice.points, closed)
+                    {
+                        let k: Vec<String> = curve
+                            .basis()
+                            .knots()
+                            .knots()
+                            .iter()
+                            .map(|t| format!("{t:?}"))
+                            .collect();
+                        knots = k.join(" ");
+                    }
+                }
+                Method::Angular | Method::Linear => {}
+            }
+            AnswerRow {
+                contour: contour_number(k),
+                closed,
+                method: family_name(method.family).into(),
+                points: u32::try_from(choice.measure.counted).unwrap_or(u32::MAX),
+                a,
+                end,
+                order,
+                knots,
+                error_pct: 100.0 * choice.measure.distances.hausdorff() / size,
+                within: choice.within_tolerance,
+                redraw: format!(
+                    "splinelab fit --method {}{flags}{} --contour {} --tolerance {tolerance:?} {points_file}",
+                    family_name(method.family),
+                    if closed { " --closed" } else { "" },
+                    contour_number(k),
+                ),
+            }
+        })
+        .collect();
+    crate::report::record::frame_of(id, &rows)
+}
+
+/// The command line's name of a cubic spline's end condition.
+pub fn cubic_end_name(end: CubicEnd) -> &'static str {
+    match end {
+        CubicEnd::Relaxed => "relaxed",
+        CubicEnd::Cyclic => "cyclic",
+        CubicEnd::Anticyclic => "anticyclic",
+    }
+}
+
+/// A method's curves as one SVG document: every contour's curve a subpath of cubic Béziers
+/// within [`answer_tolerance`] of it ([`Fit::bezier`]), `y` up as in the outline.
+///
+/// # Errors
+/// As [`Fit::try_new`] and [`Fit::bezier`]; as [`crate::report::export::svg_document`].
+pub fn answer_svg(method: &MethodStudy, size: f64) -> Result<String> {
+    let tolerance = answer_tolerance(size);
+    let mut segments = Vec::new();
+    for c in &method.contours {
+        let choice = &c.search.choice;
+        let fit = Fit::try_new(&choice.points, choice.method, c.target.is_closed())?;
+        segments.extend(fit.bezier(tolerance)?);
+    }
+    crate::report::export::svg_document(&segments, 2e-3 * size)
 }
 
 /// The searches as a table (`id`): per method the points (as counted, summed over the
@@ -147,6 +313,21 @@ fn whole_outline(
     whole
 }
 
+/// The indices of the `max` largest contours of `method` (the larger side of their bounding
+/// boxes; ties to the earlier), in the outline's order.
+fn largest_contours(method: &MethodStudy, max: usize) -> Vec<usize> {
+    let mut by_size: Vec<(f64, usize)> = method
+        .contours
+        .iter()
+        .enumerate()
+        .map(|(k, c)| (c.target.size(), k))
+        .collect();
+    by_size.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut kept: Vec<usize> = by_size.into_iter().take(max).map(|(_, k)| k).collect();
+    kept.sort_unstable();
+    kept
+}
+
 /// A family's name on the command line and in tables.
 pub fn family_name(family: Family) -> &'static str {
     match family {
@@ -158,8 +339,13 @@ pub fn family_name(family: Family) -> &'static str {
     }
 }
 
+/// The most contours a method's figure draws in panels of their own, beside the whole
+/// outline: the largest (by the larger side of their bounding boxes), in the outline's order.
+pub const MAX_CONTOUR_PANELS: usize = 8;
+
 /// One figure per method: the whole outline in one panel (for more than one contour), then a
-/// panel per contour, the curve over the outline with its points ([`draw::choice_panel`]).
+/// panel per contour, at most [`MAX_CONTOUR_PANELS`] of them (the largest; the title says
+/// so), the curve over the outline with its points ([`draw::choice_panel`]).
 ///
 /// # Errors
 /// As [`draw::choice_panel`].
@@ -168,7 +354,7 @@ pub fn figures(found: &OutlineStudy) -> Result<Vec<(Family, Figure)>> {
         .methods
         .iter()
         .map(|m| {
-            let panels = m
+            let all = m
                 .contours
                 .iter()
                 .enumerate()
@@ -194,19 +380,27 @@ pub fn figures(found: &OutlineStudy) -> Result<Vec<(Family, Figure)>> {
                     Ok(panel)
                 })
                 .collect::<Result<Vec<_>>>()?;
-            let mut panels = panels;
-            if panels.len() > 1 {
-                panels.insert(0, whole_outline(&panels, &m.family));
+            let shown = largest_contours(m, MAX_CONTOUR_PANELS);
+            let mut panels: Vec<_> = shown.iter().map(|&k| all[k].clone()).collect();
+            if all.len() > 1 {
+                panels.insert(0, whole_outline(&all, &m.family));
             }
             let n = panels.len();
             let cols = n.min(3);
             let rows = n.div_ceil(cols.max(1));
-            let title = format!(
+            let mut title = format!(
                 "{}: {} points, error {:.2} % of the size",
                 family_name(m.family),
                 m.counted(),
                 100.0 * m.error() / found.size
             );
+            if shown.len() < all.len() {
+                title.push_str(&format!(
+                    "; the {} largest of {} contours alone",
+                    shown.len(),
+                    all.len()
+                ));
+            }
             let figure = Figure::from(Figure2d::new(title, panels, (rows, cols)).shared_legend())
                 .with_size(520 * cols as u32 + 80, 480 * rows as u32 + 80);
             Ok((m.family, figure))

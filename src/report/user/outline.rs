@@ -141,6 +141,57 @@ pub fn read_points(path: &Path, columns: &Columns) -> Result<Vec<Vector2<f64>>> 
     Ok(points_from_csv::<2>(&text, columns)?)
 }
 
+/// The points of one contour of a CSV file with a `contour` column (as `splinelab fewest`
+/// writes its answers, `NAME-METHOD-points.csv`): the rows whose `contour` is `contour`, in
+/// order, `x` and `y` from the columns named by `columns` (`x` and `y` for
+/// [`Columns::First`]).
+///
+/// # Errors
+/// As [`read_points`]; [`crate::error::Error::Parse`] for column indices (the contour column
+/// is found by its name); [`crate::error::Error::TooFewPoints`] if no row is of `contour`.
+pub fn read_contour_points(
+    path: &Path,
+    columns: &Columns,
+    contour: u32,
+) -> Result<Vec<Vector2<f64>>> {
+    let names = match columns {
+        Columns::First => vec!["x".to_string(), "y".to_string()],
+        Columns::Names(names) => names.clone(),
+        Columns::Indices(_) => {
+            return Err(crate::error::Error::Parse {
+                what: "CSV columns",
+                line: 1,
+                column: 1,
+                message: "a contour is chosen by the `contour` column's name: give the x and y \
+                          columns by name too"
+                    .into(),
+            }
+            .into())
+        }
+    };
+    let columns = Columns::Names(
+        std::iter::once("contour".to_string())
+            .chain(names)
+            .collect(),
+    );
+    let text = read_text(path)?;
+    let rows = points_from_csv::<3>(&text, &columns)?;
+    let points: Vec<Vector2<f64>> = rows
+        .iter()
+        .filter(|r| r[0] == f64::from(contour))
+        .map(|r| Vector2::new(r[1], r[2]))
+        .collect();
+    if points.is_empty() {
+        return Err(crate::error::Error::TooFewPoints {
+            what: "rows of the contour asked for",
+            needed: 1,
+            got: 0,
+        }
+        .into());
+    }
+    Ok(points)
+}
+
 /// The contours of an outline file ([`FileKind`]): a CSV's points as one contour (closed as
 /// `options.closed` says), an SVG document's or path data's contours (curves flattened within
 /// `options.flatten`; an SVG document's `y` turned up, as the figures draw), a glyph's closed

@@ -244,8 +244,10 @@ impl<'a> Sweeps<'a> {
                 let (first, last) = (t - t0, t - t0 + usize::from(items[k].candidate) * run);
                 bits.resize(start + last.div_ceil(64), 0);
                 for bit in first + lo..(first + hi).min(last) {
-                    // a side of zero length only while the cone is full (as `Cone::pass`)
-                    if cone.full || p[self.wrap(a + step + bit - first)] != p[a] {
+                    // no side of zero length (an outline through the same point twice, or an
+                    // open one that ends where it starts): a polygon's consecutive points
+                    // differ, and one point fewer draws the same
+                    if p[self.wrap(a + step + bit - first)] != p[a] {
                         bits[start + bit / 64] |= 1 << (bit % 64);
                     }
                 }
@@ -305,7 +307,7 @@ impl<'a> Sweeps<'a> {
                     for x in lo..hi {
                         let t = t + x + 1;
                         let i = if j >= t { j - t } else { j + n - t };
-                        let moved = cone.full || p[self.wrap(unrolled - step - x)] != p[b];
+                        let moved = p[self.wrap(unrolled - step - x)] != p[b];
                         if moved && forward.has(i, t) {
                             preds.push(t as u32);
                             forward.reach[i] = forward.reach[i].max(t as u32);

@@ -6,7 +6,8 @@
 //!
 //! **Files.** This file: the search, the candidates, the bound; `cone.rs`: the cone of
 //! directions within the tolerance of every vertex swept; `graph.rs`: the sweeps that list
-//! the shortcuts and the shortest paths and cycles over them.
+//! the shortcuts and the shortest paths and cycles over them; `straight.rs`: the exactly
+//! straight runs of the reference merged into one segment before the sweeps.
 //!
 //! **Candidates.** The points may sit at the reference's vertices and at equal steps along
 //! each of its segments, at most `h` apart along the outline, `h` = [`RESOLUTION`] × 2 × the
@@ -14,7 +15,11 @@
 //! [`ALONG_PER_SEGMENT`] per segment and [`MIN_ALONG`] in all (a tolerance far below the
 //! outline's size), or the work its limits ([`MAX_CANDIDATES`], [`MAX_SHORTCUTS`],
 //! [`MAX_CYCLE_WORK`]); the answer's bound states the `h` it used. An open outline's polygon
-//! starts and ends at the outline's ends, as every placement of the search.
+//! starts and ends at the outline's ends, as every placement of the search. A vertex that
+//! lies exactly between its neighbours (`straight.rs`) is no candidate of its own: the
+//! outline is the same, and a straight run of `m` such vertices would add `m²` shortcuts.
+//! No side has zero length (a polygon's neighbours differ): an outline through one point
+//! twice gets a point between.
 //!
 //! **Shortcuts.** The side from candidate `a` to candidate `b` is allowed when the outline
 //! between them lies within the tolerance `ε` of the side. The outline runs from one end of
@@ -64,6 +69,7 @@ use graph::{Item, Shortcuts};
 
 mod cone;
 mod graph;
+mod straight;
 
 pub use graph::{MAX_CYCLE_WORK, MAX_SHORTCUTS};
 
@@ -116,10 +122,18 @@ pub(super) fn search(target: &Target, options: &SearchOptions) -> Result<Search>
             });
         }
         let bound = found.bound();
+        // candidates too far apart for the argument: the fewest over them, not proven
+        let minimality = if bound > 0.0 {
+            Minimality::Optimum { bound }
+        } else {
+            Minimality::Candidates {
+                spacing: 2.0 * found.snap,
+            }
+        };
         return Ok(Search {
             attempts: vec![attempt_of(&found.choice)],
             choice: found.choice,
-            minimality: Minimality::Optimum { bound },
+            minimality,
         });
     }
     // too many points: the least tolerance met with at most max_points, by bisection between
@@ -302,6 +316,9 @@ fn optimum_points(
     min_distinct: usize,
     along: bool,
 ) -> Result<(Vec<Item>, Vec<usize>, f64)> {
+    // straight runs as one segment each: the same outline, fewer shortcuts
+    let merged = straight::merged(target)?;
+    let target = merged.as_ref().unwrap_or(target);
     let widest = target.length() / 4.0;
     // the finest spacing the caps on the candidates along the sides allow: the pieces beyond
     // the segments' own number are at most length / h
