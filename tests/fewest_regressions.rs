@@ -129,9 +129,10 @@ fn a_long_rectangle_sampled_at_unit_steps_is_its_corners() {
     assert!(method.within_tolerance());
 }
 
-/// An open stroke that ends where it starts, at a tolerance larger than the stroke: no
-/// family's answer has coincident neighbours (a polygon side of zero length), and each draws
-/// its curve again.
+/// An open stroke that ends where it starts, at a tolerance larger than the stroke: every
+/// family's answer draws its curve again (the polygon's had a side of zero length, which
+/// fitting refuses); the methods that need distinct neighbours (Angular, cubic, polygon) get
+/// them, and the cardinal spline may draw a loop from the start back to it.
 #[test]
 fn an_open_stroke_back_to_its_start_gets_distinct_neighbours() {
     // a D of a line and a half circle, open, its last point its first
@@ -157,8 +158,12 @@ fn an_open_stroke_back_to_its_start_gets_distinct_neighbours() {
     let found = search(&stroke, Tolerance::Fraction(0.5), &families);
     for method in &found.methods {
         let choice = &method.contours[0].search.choice;
+        let distinct = matches!(
+            method.family,
+            Family::Angular | Family::Cubic | Family::Linear
+        );
         assert!(
-            choice.points.windows(2).all(|w| w[0] != w[1]),
+            !distinct || choice.points.windows(2).all(|w| w[0] != w[1]),
             "{:?}: {:?}",
             method.family,
             choice.points

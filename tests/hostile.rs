@@ -349,3 +349,100 @@ fn csv_reads_are_bounded_and_quote_short_prefixes() {
     });
     assert_eq!(out.unwrap(), 1);
 }
+
+mod random {
+    use super::{bounded, doc};
+    use proptest::prelude::*;
+    use splinelab::input::{points_from_csv, read_svg_document, Columns};
+
+    /// A number as a document may write one: small, huge, tiny, negative, odd forms.
+    fn number() -> impl Strategy<Value = String> {
+        prop_oneof![
+            (-100.0..100.0f64).prop_map(|x| format!("{x:.3}")),
+            (-40i32..40, any::<bool>())
+                .prop_map(|(e, neg)| format!("{}1e{e}", if neg { "-" } else { "" })),
+            Just(".5".to_string()),
+            Just("1e38".to_string()),
+            Just("-3.4e38".to_string()),
+            Just("NaN".to_string()),
+        ]
+    }
+
+    /// Path data: commands with numbers, commas and blanks, not always well formed.
+    fn path_data() -> impl Strategy<Value = String> {
+        let command = prop_oneof![
+            Just("M"),
+            Just("L"),
+            Just("H"),
+            Just("V"),
+            Just("C"),
+            Just("S"),
+            Just("Q"),
+            Just("T"),
+            Just("A"),
+            Just("Z"),
+            Just("m"),
+            Just("a"),
+            Just("c"),
+            Just(",")
+        ];
+        prop::collection::vec((command, prop::collection::vec(number(), 0..8)), 1..12).prop_map(
+            |parts| {
+                parts
+                    .into_iter()
+                    .map(|(c, n)| format!("{c}{}", n.join(" ")))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            },
+        )
+    }
+
+    /// One element of a document: paths, shapes, uses, clips, groups with transforms, style
+    /// sheets, entities' references, images that name files.
+    fn element() -> impl Strategy<Value = String> {
+        prop_oneof![
+            path_data().prop_map(|d| format!("<path id=\"p\" d=\"{d}\"/>")),
+            (number(), number(), number()).prop_map(|(x, y, r)| format!(
+                "<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\" stroke=\"black\"/>"
+            )),
+            (number(), number()).prop_map(|(w, h)| format!("<rect width=\"{w}\" height=\"{h}\"/>")),
+            (number(), number()).prop_map(|(a, b)| format!(
+                "<g transform=\"matrix({a} 0 0 {b} 1 1)\"><use href=\"#p\"/><use href=\"#p\"/></g>"
+            )),
+            (number(), number()).prop_map(|(w, h)| format!(
+                "<clipPath id=\"c\"><rect width=\"{w}\" height=\"{h}\"/></clipPath><g clip-path=\"url(#c)\"><circle r=\"40\"/><path d=\"M0 50H100\" stroke=\"red\"/></g>"
+            )),
+            (1usize..200).prop_map(|n| format!(
+                "<style>{}</style>",
+                (0..n).map(|i| format!(".c{i} {{ fill: red }} ")).collect::<String>()
+            )),
+            Just("<image href=\"/dev/zero\" width=\"1\" height=\"1\"/>".to_string()),
+            Just("<filter id=\"f\"><feImage href=\"/dev/zero\"/></filter><rect width=\"1\" height=\"1\" filter=\"url(#f)\"/>".to_string()),
+            Just("<mask id=\"m\"><rect width=\"9\" height=\"9\" fill=\"white\"/></mask><rect width=\"2\" height=\"2\" mask=\"url(#m)\"/>".to_string()),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Random documents of hostile pieces: each read ends within the bounds, read or
+        /// refused.
+        #[test]
+        fn random_documents_are_bounded(body in prop::collection::vec(element(), 1..8)) {
+            let text = doc(&body.concat());
+            let shown = text.chars().take(200).collect::<String>();
+            let _ = bounded(&shown, move || read_svg_document(&text, 1e-2).map(|o| o.paths.len()));
+        }
+
+        /// Random CSV texts over the characters that matter to the grammar: each read ends
+        /// within the bounds, and a refusal quotes a short part of the text.
+        #[test]
+        fn random_csv_texts_are_bounded(text in "[0-9eE.,;\" \t\r\n#+x-]{0,2000}") {
+            let shown = text.chars().take(60).collect::<String>();
+            let result = bounded(&shown, move || points_from_csv::<2>(&text, &Columns::First));
+            if let Err(e) = result {
+                prop_assert!(e.to_string().len() < 400, "{e}");
+            }
+        }
+    }
+}

@@ -422,6 +422,17 @@ fn outlines_are_read_by_their_file_kind() {
     let path = write_temp(dir.path(), "a.path", b"M 0 0 Q 5 10 10 0 Z");
     let c = read_outline(&path, &ReadOptions::default()).unwrap();
     assert!(c[0].points.len() > 10, "the quadratic is flattened densely");
+    // a loop whose segment ends all meet in one point: its size from its curves (the chords'
+    // is 0), so it is flattened within a small part of it (issue 46)
+    let d = b"M 0 0 C 10 10 -10 10 0 0 Z";
+    let path = write_temp(dir.path(), "loop.path", d);
+    let c = read_outline(&path, &ReadOptions::default()).unwrap();
+    let reach = c[0].points.iter().map(|p| p.y.abs()).fold(0.0, f64::max);
+    assert!(
+        (reach - 7.5).abs() < 0.01,
+        "the loop reaches |y| = 7.5: {reach}"
+    );
+    assert!(c[0].points.len() > 20, "{} points", c[0].points.len());
     let font = Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/assets/fonts/DejaVuSans.ttf"

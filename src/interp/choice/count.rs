@@ -64,7 +64,20 @@ pub fn search(target: &Target, family: Family, options: &SearchOptions) -> Resul
         // method's minimum and the starts pruned from its own configurations reach counts
         // that starts pruned from the polygon miss), the fewer points kept
         let from = search(&from_polygon)?;
-        let own = search(options)?;
+        // on a dense reference (a digitised outline, whose answers count many points) on its
+        // own up to half as many points again: its rise from the minimum looks at every count
+        let max_points = if target.is_dense() {
+            let cap = from.choice.measure.counted.saturating_mul(3) / 2;
+            options
+                .max_points
+                .min(cap.max(fewest_counted(family, target.is_closed())))
+        } else {
+            options.max_points
+        };
+        let own = search(&SearchOptions {
+            max_points,
+            ..options.clone()
+        })?;
         let fewer =
             own.choice.within_tolerance && own.choice.measure.counted < from.choice.measure.counted;
         return Ok(if fewer {

@@ -167,7 +167,7 @@ fn arc_errors(
     };
     let mut errors = vec![0.0; arcs];
     let len = target.length();
-    // a dense target: its simplification's vertices (within a sixty-fourth of the tolerance)
+    // a dense target: its simplification's vertices (within a sixteenth of the tolerance)
     let (points, at) = target.search_reference();
     for (p, &a) in points.iter().zip(at) {
         // the arc j with s[j] ≤ a < s[j + 1] (closed: a before the first point belongs to

@@ -159,12 +159,6 @@ impl Layout {
     pub fn points(&self, target: &Target, x: &[f64]) -> Option<Vec<Vector2<f64>>> {
         let s = self.arcs(target, x)?;
         let mut points: Vec<Vector2<f64>> = s.iter().map(|&v| target.point(v)).collect();
-        // distinct positions on an outline through the same point twice (an open stroke back
-        // at its start) may be one point: a curve's neighbours must differ
-        let wraps = self.closed && points.first() == points.last();
-        if wraps || points.windows(2).any(|w| w[0] == w[1]) {
-            return None;
-        }
         if self.guide_coordinates() > 0 {
             let (g0, g1) = self.guides(target, x)?;
             points.insert(0, g0);

@@ -358,6 +358,7 @@ fn fewest_outline(n: usize) -> Result<Runner> {
         Family::Cardinal,
         Family::Cubic,
         Family::BSpline,
+        Family::Linear,
     ];
     Ok(Box::new(move || {
         let found = fewest(
@@ -564,7 +565,7 @@ pub const WORKLOADS: [Workload; 23] = [
     },
     Workload {
         id: "fewest-outline",
-        description: "`splinelab fewest` with its default options, the four methods, on the Sicilian coast densified to n points (default 1e4; all cores; points: the counts found)",
+        description: "`splinelab fewest` with its default options, the five methods, on the Sicilian coast densified to n points (default 1e4; all cores; points: the counts found)",
         unit: "outline points",
         size: 10_000,
         sweep: &[],

@@ -258,7 +258,7 @@ pub fn table(id: &str, found: &OutlineStudy) -> Result<Table> {
         .iter()
         .map(|m| {
             let join = |f: &dyn Fn(&ContourSearch) -> String| {
-                m.contours.iter().map(f).collect::<Vec<_>>().join(" + ")
+                per_contour(m.contours.iter().map(f).collect())
             };
             FewestRow {
                 method: family_name(m.family).into(),
@@ -299,8 +299,19 @@ fn whole_outline(
     )
     .equal();
     let mut seen = std::collections::HashSet::new();
+    // the points' marks hide the outline beyond a few hundred: then the curves alone
+    let marks: usize = panels
+        .iter()
+        .flat_map(|p| p.series.iter())
+        .filter(|s| is_marks(s))
+        .map(|s| s.points.len())
+        .sum();
+    let keep_marks = marks <= crate::report::user::fit::MAX_MARKERS;
+    if !keep_marks {
+        whole.x_label = format!("{marks} points, not marked");
+    }
     for panel in panels {
-        for series in &panel.series {
+        for series in panel.series.iter().filter(|s| keep_marks || !is_marks(s)) {
             let mut series = series.clone();
             if let Some(label) = &series.label {
                 if !seen.insert(label.clone()) {
@@ -311,6 +322,37 @@ fn whole_outline(
         }
     }
     whole
+}
+
+/// Whether a series marks points (dots or crosses, no line).
+fn is_marks(series: &crate::report::plot2d::Series) -> bool {
+    use crate::report::plot2d::Style;
+    matches!(series.style, Style::Points(_) | Style::Crosses(_))
+}
+
+/// The per-contour values of a table cell: joined with ` + ` for up to
+/// [`MAX_CONTOUR_PANELS`] contours; beyond, how many contours there are and the values by how
+/// often they occur (the three commonest, `4 × 1520, 5 × 9, …`), so a map's row stays
+/// readable.
+fn per_contour(values: Vec<String>) -> String {
+    if values.len() <= MAX_CONTOUR_PANELS {
+        return values.join(" + ");
+    }
+    let mut counts: Vec<(String, usize)> = Vec::new();
+    for v in &values {
+        match counts.iter_mut().find(|(w, _)| w == v) {
+            Some((_, n)) => *n += 1,
+            None => counts.push((v.clone(), 1)),
+        }
+    }
+    counts.sort_by_key(|c| std::cmp::Reverse(c.1));
+    let shown: Vec<String> = counts
+        .iter()
+        .take(3)
+        .map(|(v, n)| format!("{v} × {n}"))
+        .collect();
+    let more = if counts.len() > 3 { ", …" } else { "" };
+    format!("{} contours: {}{more}", values.len(), shown.join(", "))
 }
 
 /// The indices of the `max` largest contours of `method` (the larger side of their bounding

@@ -192,6 +192,22 @@ pub fn read_contour_points(
     Ok(points)
 }
 
+/// The size of SVG path data's curves by their extrema (single precision, as an SVG
+/// document's parser reads them), 0 if the data cannot be read so: the basis of the
+/// flattening tolerance of a path whose segment ends all meet in one point.
+fn curves_size(d: &str) -> f64 {
+    if d.contains(['"', '<', '&']) {
+        return 0.0;
+    }
+    let document = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\"><path d=\"{d}\" fill=\"none\" stroke=\"black\"/></svg>"
+    );
+    SvgDocument::parse(&document)
+        .and_then(|doc| doc.extent())
+        .map_or(0.0, |e| e.size())
+        .max(0.0)
+}
+
 /// The contours of an outline file ([`FileKind`]): a CSV's points as one contour (closed as
 /// `options.closed` says), an SVG document's or path data's contours (curves flattened within
 /// `options.flatten`; an SVG document's `y` turned up, as the figures draw), a glyph's closed
@@ -216,11 +232,17 @@ pub fn read_outline(path: &Path, options: &ReadOptions) -> Result<Vec<Contour>> 
             let text = read_text(path)?;
             let tolerance = match options.flatten {
                 Some(t) => t,
-                // the size from the path's end points (curves as chords), then from the
-                // curves flattened within that fraction of it: the curves' own size
+                // the size from the path's end points (curves as chords; a loop whose ends
+                // meet: from its curves' extrema), then from the curves flattened within
+                // that fraction of it: the curves' own size
                 None => {
                     let chords = size(&contours_from_svg_path(&text, f64::MAX)?);
-                    match FLATTEN_FRACTION * chords {
+                    let basis = if chords > 0.0 {
+                        chords
+                    } else {
+                        curves_size(&text)
+                    };
+                    match FLATTEN_FRACTION * basis {
                         t if t > 0.0 => FLATTEN_FRACTION * size(&contours_from_svg_path(&text, t)?),
                         t => t,
                     }
