@@ -267,21 +267,57 @@ impl<'a> Counts<'a> {
     /// start meets the tolerance becomes `found`. Returns the count whose best start came
     /// nearest (searched in full when no count has a valid configuration: an Angular spline
     /// on a polygon, whose placements with many points have collinear triples).
+    ///
+    /// On a dense reference with counts bisected the counts looked at grow by doubling steps
+    /// (a digitised outline's first count can be a hundred or more), and the first that meets
+    /// is then bisected down to the lowest the looks meet, as the one-by-one rise would find
+    /// where a look that meets at `n` meets at every count above.
     fn rise(&mut self, min: usize, max: usize) -> Result<Option<(f64, usize)>> {
         let mut nearest: Option<(f64, usize)> = None;
-        for n in min..=max {
-            let (best, e, evals) = first_look(self.target, self.family, n, self.options)?;
-            self.evaluations += evals;
-            if e.is_finite() && nearest.is_none_or(|(b, _)| e < b) {
-                nearest = Some((e, n));
-            }
-            if let Some((best, s)) = best {
-                self.found = Some((n, best));
-                self.seed = s;
+        let doubling = self.target.is_dense() && !self.options.every_count_below;
+        let (mut n, mut step, mut failed) = (min, 1, min - 1);
+        while n <= max {
+            if self.look(n, &mut nearest)? {
                 break;
+            }
+            failed = n;
+            n = if doubling {
+                let next = n.saturating_add(step).min(max);
+                step = step.saturating_mul(2);
+                if next == n {
+                    break;
+                }
+                next
+            } else {
+                n + 1
+            };
+        }
+        // bisect between the last count that failed and the first that met
+        while let Some((top, _)) = self.found.as_ref().filter(|f| f.0 > failed + 1) {
+            let mid = failed + (top - failed) / 2;
+            if !self.look(mid, &mut nearest)? {
+                failed = mid;
             }
         }
         Ok(nearest)
+    }
+
+    /// The first look at `n` points: `found` (and the seed) if a start meets the tolerance,
+    /// `nearest` kept; whether it met.
+    fn look(&mut self, n: usize, nearest: &mut Option<(f64, usize)>) -> Result<bool> {
+        let (best, e, evals) = first_look(self.target, self.family, n, self.options)?;
+        self.evaluations += evals;
+        if e.is_finite() && nearest.is_none_or(|(b, _)| e < b) {
+            *nearest = Some((e, n));
+        }
+        match best {
+            Some((best, s)) => {
+                self.found = Some((n, best));
+                self.seed = s;
+                Ok(true)
+            }
+            None => Ok(false),
+        }
     }
 
     /// The full search of `n` distinct points, recorded; its configuration if it meets the
