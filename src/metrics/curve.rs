@@ -306,9 +306,15 @@ impl SegmentTree {
         // the plain formula's distance is within `reach` of the exact one; the relative slack
         // covers the box distances' rounding
         let reach = CHEAP_REACH * f64::EPSILON * (size * k);
-        let mut best = f64::INFINITY;
-        let mut at = 0;
-        // boxes and segments farther than this are skipped: (best (1 + slack) + reach)²
+        // the accurate distance is taken only of the segments that may be the nearest, once
+        // the search has passed them all: `upper` bounds the minimum (the least plain distance
+        // plus `reach`), and a segment whose plain distance less `reach` is above it cannot be
+        // it; the others wait in `pending`, in the order visited (the first of equal minima
+        // wins, as a search that measured each at once would keep)
+        let mut upper = f64::INFINITY;
+        let mut pending = Pending::default();
+        let measure = |s: usize| segment_distance(p, self.points[s], self.points[s + 1]) * k;
+        // boxes and segments farther than this are skipped: (upper (1 + slack) + reach)²
         let mut limit = f64::INFINITY;
         // depth ≤ log₂(segments) + 1 < 64 for any size below MAX_ELEMENTS
         let mut stack = [0u32; 64];
@@ -329,20 +335,17 @@ impl SegmentTree {
                     }
                     // the exact distance is at most the plain one plus `reach`: below `stop`,
                     // the caller needs no exact value
-                    let c = c2.sqrt() + reach;
+                    let plain = c2.sqrt();
+                    let c = plain + reach;
                     if c < stop {
                         return (c * u, i as usize);
                     }
-                    let d = segment_distance(p, a, b) * k;
-                    if d < best {
-                        best = d;
-                        at = i as usize;
-                        let r = best * (1.0 + PRUNE_SLACK) + reach;
+                    if c < upper {
+                        upper = c;
+                        let r = upper * (1.0 + PRUNE_SLACK) + reach;
                         limit = r * r;
                     }
-                }
-                if best < stop {
-                    return (best * u, at);
+                    pending.push(i as usize, plain - reach, upper, measure);
                 }
                 continue;
             }
@@ -357,6 +360,7 @@ impl SegmentTree {
             stack[top + 1] = near;
             top += 2;
         }
+        let (best, at) = pending.finish(upper, measure);
         (best * u, at)
     }
 
@@ -425,6 +429,72 @@ impl SegmentTree {
             }
         }
         (max, at)
+    }
+}
+
+/// The segments [`SegmentTree::nearest`] has passed that may be the nearest, waiting for
+/// their accurate distance: at most [`PENDING`] (beyond, the oldest are measured at once), and
+/// the least accurate distance measured so far with its segment.
+#[derive(Default)]
+struct Pending {
+    /// `(segment, lower bound of its distance)`, in the order visited.
+    waiting: [(usize, f64); PENDING],
+    len: usize,
+    /// The least accurate distance measured, and its segment (the first of equal ones).
+    best: Option<(f64, usize)>,
+}
+
+/// How many segments [`Pending`] holds before it measures them.
+const PENDING: usize = 16;
+
+impl Pending {
+    /// Adds segment `s` whose distance is at least `low`; drops those that cannot be below
+    /// `upper` (their lower bound above it); measures the waiting ones by `measure` when
+    /// full.
+    fn push(&mut self, s: usize, low: f64, upper: f64, measure: impl Fn(usize) -> f64) {
+        if low > upper {
+            return;
+        }
+        if self.len == PENDING {
+            self.keep_below(upper);
+        }
+        if self.len == PENDING {
+            self.measure_all(&measure);
+        }
+        self.waiting[self.len] = (s, low);
+        self.len += 1;
+    }
+
+    /// Drops the waiting segments whose lower bound is above `upper`, keeping the order.
+    fn keep_below(&mut self, upper: f64) {
+        let mut kept = 0;
+        for j in 0..self.len {
+            if self.waiting[j].1 <= upper {
+                self.waiting[kept] = self.waiting[j];
+                kept += 1;
+            }
+        }
+        self.len = kept;
+    }
+
+    /// Measures every waiting segment, in order, into `best` (a tie keeps the earlier).
+    fn measure_all(&mut self, measure: &impl Fn(usize) -> f64) {
+        for j in 0..self.len {
+            let s = self.waiting[j].0;
+            let d = measure(s);
+            if self.best.is_none_or(|(b, _)| d < b) {
+                self.best = Some((d, s));
+            }
+        }
+        self.len = 0;
+    }
+
+    /// The least accurate distance among the segments that may be the nearest, and its
+    /// segment (`(∞, 0)` for none).
+    fn finish(mut self, upper: f64, measure: impl Fn(usize) -> f64) -> (f64, usize) {
+        self.keep_below(upper);
+        self.measure_all(&measure);
+        self.best.map_or((f64::INFINITY, 0), |(d, s)| (d, s))
     }
 }
 
