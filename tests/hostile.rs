@@ -241,23 +241,17 @@ fn huge_numbers_are_refused_before_the_parser() {
 
 #[test]
 fn style_sheets_are_bounded() {
-    let rules: String = (0..100_000).map(|k| format!(".c{k}{{fill:red}}")).collect();
-    let rects: String = (0..300)
-        .map(|k| format!("<rect class='c{k}' width='1' height='1'/>"))
-        .collect();
-    let m = refused(
-        "10^5 CSS rules",
-        doc(&format!("<style>{rules}</style>{rects}")),
-    );
+    // `rules` class rules and `rects` rectangles of those classes
+    let sheet = |rules: usize, rects: usize| {
+        let rules: String = (0..rules).map(|k| format!(".c{k}{{fill:red}}")).collect();
+        let rects: String = (0..rects)
+            .map(|k| format!("<rect class='c{k}' width='1' height='1'/>"))
+            .collect();
+        doc(&format!("<style>{rules}</style>{rects}"))
+    };
+    let m = refused("10^5 CSS rules", sheet(100_000, 300));
     assert!(m.contains("style-sheet rules"), "{m}");
-    let rules: String = (0..3_000).map(|k| format!(".c{k}{{fill:red}}")).collect();
-    let rects: String = (0..10_000)
-        .map(|k| format!("<rect class='c{k}' width='1' height='1'/>"))
-        .collect();
-    let m = refused(
-        "3 000 rules on 10^4 elements",
-        doc(&format!("<style>{rules}</style>{rects}")),
-    );
+    let m = refused("3 000 rules on 10^4 elements", sheet(3_000, 10_000));
     assert!(m.contains("matches read"), "{m}");
     // a sheet of a few rules reads
     let text = doc("<style>.a{fill:red}</style><rect class='a' width='1' height='1'/>");

@@ -55,7 +55,7 @@ pub fn segment_distance(p: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f6
 
 /// `x − y` and its rounding error: `x − y = d + e` exactly (Knuth's two-sum).
 #[inline]
-fn two_diff(x: f64, y: f64) -> (f64, f64) {
+pub(crate) fn two_diff(x: f64, y: f64) -> (f64, f64) {
     let d = x - y;
     let z = d - x;
     (d, (x - (d - z)) - (y + z))
@@ -63,7 +63,7 @@ fn two_diff(x: f64, y: f64) -> (f64, f64) {
 
 /// `x · y` and its rounding error: `x · y = p + e` exactly (finite, not underflowing).
 #[inline]
-fn two_prod(x: f64, y: f64) -> (f64, f64) {
+pub(crate) fn two_prod(x: f64, y: f64) -> (f64, f64) {
     let p = x * y;
     (p, x.mul_add(y, -p))
 }

@@ -23,7 +23,7 @@
 
 use crate::input::Contour;
 use crate::interp::choice::Family;
-use crate::interp::methods::{CubicEnd, Interpolant, Method};
+use crate::interp::methods::{Interpolant, Method};
 use crate::report::error::Result;
 use crate::report::figure::Figure;
 use crate::report::legend::parameter_legend;
@@ -177,7 +177,7 @@ pub fn answer_parameters(
                     flags = format!(" --a {value}");
                 }
                 Method::Cubic { end: e } => {
-                    end = cubic_end_name(e).into();
+                    end = e.legend().into_owned();
                     flags = format!(" --end {end}");
                 }
                 Method::BSpline { order: o } => {
@@ -219,15 +219,6 @@ pub fn answer_parameters(
         })
         .collect();
     crate::report::record::frame_of(id, &rows)
-}
-
-/// The command line's name of a cubic spline's end condition.
-pub fn cubic_end_name(end: CubicEnd) -> &'static str {
-    match end {
-        CubicEnd::Relaxed => "relaxed",
-        CubicEnd::Cyclic => "cyclic",
-        CubicEnd::Anticyclic => "anticyclic",
-    }
 }
 
 /// A method's curves as one SVG document: every contour's curve a subpath of cubic Béziers

@@ -7,6 +7,7 @@
 
 use super::super::target::Target;
 use crate::error::Result;
+use crate::metrics::curve::{two_diff, two_prod};
 use nalgebra::Vector2;
 
 /// Whether `b` lies on the segment from `a` to `c`, strictly between them, proven in exact
@@ -15,21 +16,19 @@ use nalgebra::Vector2;
 /// the cross product is 0 and the two differences point the same way.
 pub(super) fn exactly_between(a: Vector2<f64>, b: Vector2<f64>, c: Vector2<f64>) -> bool {
     let exact_diff = |x: f64, y: f64| {
-        let d = x - y;
-        let z = d - x;
-        let e = (x - (d - z)) - (y + z);
+        let (d, e) = two_diff(x, y);
         (d.is_finite() && e == 0.0).then_some(d)
     };
     // the fused multiply-add's remainder is exact only above the underflow range (a product
     // of tiny factors rounds to 0 with a remainder of 0 that proves nothing)
     let exact_prod = |x: f64, y: f64| {
-        let p = x * y;
+        let (p, e) = two_prod(x, y);
         let representable = if p == 0.0 {
             x == 0.0 || y == 0.0
         } else {
             p.abs() >= 2f64.powi(-969)
         };
-        (p.is_finite() && representable && x.mul_add(y, -p) == 0.0).then_some(p)
+        (p.is_finite() && representable && e == 0.0).then_some(p)
     };
     let (Some(ux), Some(uy), Some(vx), Some(vy)) = (
         exact_diff(b.x, a.x),
