@@ -694,3 +694,49 @@ fn bezier_segments_join_exactly() {
         }
     }
 }
+
+/// `fit --contour K`'s reader (issue 46): one contour of a `contour,x,y` file; refused by name
+/// for column indices (the contour column is found by its name), a contour with no row, a
+/// file without the column, and a non-finite coordinate.
+#[test]
+fn one_contour_of_an_answer_file_is_read() {
+    use splinelab::input::Columns;
+    use splinelab::report::user::outline::read_contour_points;
+    let dir = tempfile::tempdir().unwrap();
+    let file = write_temp(
+        dir.path(),
+        "a.csv",
+        b"contour,x,y\n1,0,0\n1,1,0\n2,5,5\n2,6,5\n2,6,6\n",
+    );
+    let two = read_contour_points(&file, &Columns::First, 2).unwrap();
+    assert_eq!(two, [V::new(5.0, 5.0), V::new(6.0, 5.0), V::new(6.0, 6.0)]);
+    let named = Columns::Names(vec!["x".into(), "y".into()]);
+    assert_eq!(read_contour_points(&file, &named, 1).unwrap().len(), 2);
+    let refusals = [
+        read_contour_points(&file, &Columns::Indices(vec![1, 2]), 1),
+        read_contour_points(&file, &Columns::First, 3),
+        read_contour_points(
+            &write_temp(dir.path(), "b.csv", b"x,y\n0,0\n"),
+            &Columns::First,
+            1,
+        ),
+        read_contour_points(
+            &write_temp(dir.path(), "c.csv", b"contour,x,y\n1,nan,0\n1,1,inf\n"),
+            &Columns::First,
+            1,
+        ),
+    ];
+    for (k, r) in refusals.iter().enumerate() {
+        assert!(r.is_err(), "case {k}: {r:?}");
+    }
+    assert!(refusals[0]
+        .as_ref()
+        .unwrap_err()
+        .to_string()
+        .contains("by name"));
+    assert!(refusals[1]
+        .as_ref()
+        .unwrap_err()
+        .to_string()
+        .contains("contour"));
+}
