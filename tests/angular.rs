@@ -9,6 +9,7 @@ use common::{hausdorff, Rng, EXACT, FD, FD_STEP};
 use nalgebra::{Matrix2, Vector2};
 use num_dual::Dual64;
 use splinelab::interp::{classify, COLLINEAR_SIN};
+use splinelab::metrics::curve::sample_pieces;
 use splinelab::{
     guide_point, signed_curvature, AngularSpline, Error, HermiteMidpoint, InflectionRule,
     MirrorMidpoint, ParametricCurve, PieceKind,
@@ -722,6 +723,57 @@ fn circumcircles_match_the_determinant_formula() {
     }
     assert!(splinelab::circumcircle(v(0.0, 0.0), v(1.0, 1.0), v(2.0, 2.0)).is_none());
     assert!(splinelab::circumcircle(v(0.0, 0.0), v(0.0, 0.0), v(2.0, 1.0)).is_none());
+}
+
+#[test]
+fn the_fast_piece_samples_are_the_reference_samples() {
+    let mut rng = Rng::new(41);
+    let mut out = Vec::new();
+    let mut inflections = 0;
+    for case in 0..120 {
+        let p = if case % 3 == 0 {
+            let n = 5 + (case % 40);
+            (0..n)
+                .map(|i| {
+                    let t = TAU * i as f64 / n as f64;
+                    v(3.0 * t.cos(), 1.2 * t.sin())
+                })
+                .collect()
+        } else {
+            walk(&mut rng, 4 + case % 9)
+        };
+        let spline = if case % 2 == 0 {
+            AngularSpline::closed(&p)
+        } else {
+            AngularSpline::try_new(p.clone())
+        };
+        let Ok(spline) = spline else { continue };
+        inflections += spline
+            .kinds()
+            .iter()
+            .filter(|k| **k == PieceKind::Inflection)
+            .count();
+        let breaks: Vec<f64> = (0..=spline.pieces()).map(|k| k as f64).collect();
+        for per_piece in [2, 3, 4, 5, 9, 24, 256] {
+            spline.sample_pieces_into(per_piece, &mut out).unwrap();
+            let reference = sample_pieces(&spline, &breaks, per_piece).unwrap();
+            assert_eq!(out.len(), reference.len());
+            let scale = scale_of(&p);
+            for (k, (a, b)) in out.iter().zip(&reference).enumerate() {
+                assert!(
+                    (a - b).norm() <= 1e-12 * scale,
+                    "case {case}, {per_piece} per piece, point {k}: {a:?} vs {b:?}"
+                );
+            }
+        }
+    }
+    assert!(inflections > 20, "{inflections} inflection pieces");
+    assert!(matches!(
+        AngularSpline::try_new(walk(&mut rng, 5))
+            .unwrap()
+            .sample_pieces_into(1, &mut out),
+        Err(Error::TooFewSamples { .. })
+    ));
 }
 
 #[test]

@@ -2009,6 +2009,21 @@ proptest! {
                 for (k, (a, b)) in fast.iter().zip(&reference).enumerate() {
                     prop_assert!(finite(a) && amax(&(a - b)) <= 1e-10 * scale + FLOOR, "polyline_into point {}: {:?} vs {:?}", k, a, b);
                 }
+                // the fast piece samples are the reference's
+                let breaks: Vec<f64> = (0..=c.pieces()).map(|k| k as f64).collect();
+                let reference = splinelab::metrics::curve::sample_pieces(&c, &breaks, 24);
+                let fast = c.sample_pieces_into(24, &mut fast).map(|()| fast);
+                match (fast, reference) {
+                    (Ok(fast), Ok(reference)) => {
+                        prop_assert_eq!(fast.len(), reference.len());
+                        let scale = max_norm(&p).max(max_norm(&reference));
+                        for (k, (a, b)) in fast.iter().zip(&reference).enumerate() {
+                            prop_assert!(amax(&(a - b)) <= 1e-10 * scale + FLOOR, "sample_pieces_into point {}: {:?} vs {:?}", k, a, b);
+                        }
+                    }
+                    (Err(_), Err(_)) => {}
+                    (f, r) => prop_assert!(false, "fast {:?} vs reference {:?}", f.map(|v| v.len()), r.map(|v| v.len())),
+                }
                 check_angular_g1(&c)?;
             }
             Ok(())
@@ -2712,6 +2727,46 @@ proptest! {
             let tree = SegmentTree::new(&line).unwrap();
             let brute = line.windows(2).map(|w| segment_distance(p, w[0], w[1])).fold(f64::INFINITY, f64::min);
             prop_assert_eq!(tree.distance(p), brute);
+            Ok(())
+        })?;
+    }
+
+    /// `SegmentTree::farthest_below_from`, whichever point it measures first, is
+    /// `farthest_below`: below the limit the same exact largest distance (the brute-force
+    /// maximum of minima), at or above it a distance at least the limit.
+    #[test]
+    fn the_first_point_changes_no_farthest_distance(
+        line in vec((-1.0f64..1.0, -1.0f64..1.0), 1..12),
+        from in vec((-2.0f64..2.0, -2.0f64..2.0), 1..40),
+        first in 0usize..50,
+        limit in prop::option::of(0.0f64..2.0),
+    ) {
+        guard(|| {
+            use splinelab::metrics::curve::{segment_distance, SegmentTree};
+            let v = |&(x, y): &(f64, f64)| Vector2::new(x, y);
+            let line: Vec<Vector2<f64>> = line.iter().map(v).collect();
+            let from: Vec<Vector2<f64>> = from.iter().map(v).collect();
+            let tree = SegmentTree::new(&line).unwrap();
+            let limit = limit.unwrap_or(f64::INFINITY);
+            let brute = from
+                .iter()
+                .map(|&p| {
+                    if line.len() == 1 {
+                        segment_distance(p, line[0], line[0])
+                    } else {
+                        line.windows(2).map(|w| segment_distance(p, w[0], w[1])).fold(f64::INFINITY, f64::min)
+                    }
+                })
+                .fold(0.0, f64::max);
+            let (plain, _) = tree.farthest_below(&from, limit);
+            let (probed, at) = tree.farthest_below_from(&from, limit, Some(first));
+            prop_assert!(at.is_some_and(|i| i < from.len()));
+            if brute < limit {
+                prop_assert_eq!(plain, brute);
+                prop_assert_eq!(probed, brute);
+            } else {
+                prop_assert!(plain >= limit && probed >= limit, "{} {} vs limit {}", plain, probed, limit);
+            }
             Ok(())
         })?;
     }

@@ -176,6 +176,20 @@ pub enum Interpolant {
 }
 
 impl Interpolant {
+    /// `per_piece` points at equally spaced parameters over each piece between
+    /// [`Interpolant::breaks`], both ends included (a joint once), into `out` (cleared first):
+    /// [`crate::metrics::curve::sample_pieces_into`], the Angular spline's faster
+    /// ([`AngularSpline::sample_pieces_into`]).
+    ///
+    /// # Errors
+    /// As [`crate::metrics::curve::sample_pieces_into`].
+    pub fn sample_pieces_into(&self, per_piece: usize, out: &mut Vec<Vector2<f64>>) -> Result<()> {
+        match self {
+            Interpolant::Angular(c) => c.sample_pieces_into(per_piece, out),
+            _ => crate::metrics::curve::sample_pieces_into(self, &self.breaks(), per_piece, out),
+        }
+    }
+
     /// The parameters where the curve's pieces meet, both ends of the domain included, sorted
     /// and distinct: the Angular and cardinal segments' integers, the cubic spline's and
     /// polygon's nodes, the B-spline's distinct knots inside its domain.

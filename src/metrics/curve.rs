@@ -396,9 +396,31 @@ impl SegmentTree {
     /// found reaches `limit`: the result is exact when it is below `limit`, and otherwise a
     /// distance at least `limit` (a search comparing against its best so far needs no more).
     pub fn farthest_below(&self, from: &[Vector2<f64>], limit: f64) -> (f64, Option<usize>) {
+        self.farthest_below_from(from, limit, None)
+    }
+
+    /// As [`SegmentTree::farthest_below`], with the point `first` (if it is an index of
+    /// `from`) measured before the others: a search that asks whether a changed curve still
+    /// reaches `limit` passes the point where the last one did, and stops at once when it does.
+    /// The distance is [`SegmentTree::farthest_below`]'s whatever `first` is (below `limit` it
+    /// is the exact maximum; at or above, at least `limit`).
+    pub fn farthest_below_from(
+        &self,
+        from: &[Vector2<f64>],
+        limit: f64,
+        first: Option<usize>,
+    ) -> (f64, Option<usize>) {
         let n = from.len();
         let mut max = 0.0;
         let mut at = None;
+        if let Some(i) = first.filter(|&i| i < n) {
+            let (d, _) = self.nearest(from[i], 0.0);
+            max = d;
+            at = Some(i);
+            if max >= limit {
+                return (max, at);
+            }
+        }
         // every SPREAD-th point first, so that the largest distance is near its end early;
         // then the others in order, each tried first on the segments where its predecessor
         // found one nearer than the largest so far (consecutive points of a curve lie near

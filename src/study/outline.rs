@@ -237,8 +237,19 @@ pub fn fewest_in_stages(
         .iter()
         .flat_map(|&f| (0..targets.len()).map(move |k| (f, k)))
         .collect();
+    // the longest searches first (the cubic and Angular ones, the largest contours), so that
+    // the cores end together; the results back in the jobs' order
+    let mut order: Vec<usize> = (0..jobs.len()).collect();
+    order.sort_by_key(|&j| {
+        let (family, k) = jobs[j];
+        (
+            cost_rank(family),
+            std::cmp::Reverse(targets[k].reference().len()),
+        )
+    });
     let done = AtomicUsize::new(0);
-    let results = crate::parallel::map(&jobs, |&(family, k)| {
+    let found = crate::parallel::map(&order, |&j| {
+        let (family, k) = jobs[j];
         let found = in_stages(&targets[k], family, stages);
         progress(Progress {
             done: done.fetch_add(1, Ordering::Relaxed) + 1,
@@ -247,7 +258,11 @@ pub fn fewest_in_stages(
         });
         found
     });
-    let mut results = results.into_iter();
+    let mut results: Vec<Option<Result<Search>>> = (0..jobs.len()).map(|_| None).collect();
+    for (&j, f) in order.iter().zip(found) {
+        results[j] = Some(f);
+    }
+    let mut results = results.into_iter().flatten();
     let mut methods = Vec::with_capacity(families.len());
     for &family in families {
         let contours = targets
@@ -267,6 +282,19 @@ pub fn fewest_in_stages(
         tolerance: distance,
         methods,
     })
+}
+
+/// The rank of a family's search by its usual cost on an outline, the longest first: the
+/// cubic spline (three end conditions), the Angular spline, the cardinal one (two searches),
+/// the B-spline's fits, the polygon's exact optimum.
+fn cost_rank(family: Family) -> u8 {
+    match family {
+        Family::Cubic => 0,
+        Family::Angular => 1,
+        Family::Cardinal => 2,
+        Family::BSpline => 3,
+        Family::Linear => 4,
+    }
 }
 
 /// `target` searched with each of `stages` in turn, each from the previous answer, the best

@@ -231,13 +231,7 @@ fn fewest_points_cases() -> Vec<Case> {
     vec![
         case("choice::fewest_points_max_points_zero", || {
             let t = ok(rectangle_target(40))?;
-            for family in [
-                Family::Angular,
-                Family::Cardinal,
-                Family::Cubic,
-                Family::BSpline,
-                Family::Linear,
-            ] {
+            for family in Family::ALL {
                 expect_err!(
                     fewest_points(&t, family, &options(0)),
                     Error::TooFewPoints { .. } | Error::OutOfDomain { .. }

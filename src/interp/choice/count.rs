@@ -181,18 +181,18 @@ pub(super) fn placed(target: &Target, family: Family, options: &SearchOptions) -
     let max = distinct_of(family, closed, options.max_points).min(max_distinct_for(target));
     let mut counts = Counts::new(target, family, options)?;
     // 1. an upper count: the known one, or the first where a start meets the tolerance
-    let nearest = if counts.found.is_none() {
-        counts.rise(min, max)?
-    } else {
-        None
-    };
+    let risen = counts.found.is_none();
+    let nearest = if risen { counts.rise(min, max)? } else { None };
     let top = counts.found.as_ref().map_or(max + 1, |f| f.0);
+    // a dense reference's upper count from the rise's cheap looks (or its cap) lies far above
+    // the answer (three to four times on a coastline): the gallop's steps start larger there
+    let jump = risen && target.is_dense();
     // 2. the counts below it, each with the full budget (and the starts pruned from the
     // fewest points found so far)
     if options.every_count_below {
         counts.every_count_below(top, min)?;
     } else {
-        counts.gallop_and_bisect(top, min)?;
+        counts.gallop_and_bisect(top, min, jump)?;
     }
     // nothing valid anywhere: the count whose best start came nearest, in full
     if counts.found.is_none() && counts.tried.iter().all(|a| a.2.is_none()) {
@@ -361,12 +361,17 @@ impl<'a> Counts<'a> {
         Ok(())
     }
 
-    /// Step 2 without it: gallop down from `top` while the full search succeeds, then bisect
-    /// between the lowest success and the highest failure (the count below the answer is so
-    /// searched in full).
-    fn gallop_and_bisect(&mut self, top: usize, min: usize) -> Result<()> {
+    /// Step 2 without it: gallop down from `top` while the full search succeeds (steps from 1,
+    /// doubling; with `jump`, from [`DENSE_GALLOP_FRACTION`] of the first count found), then
+    /// bisect between the lowest success and the highest failure (the count below the answer
+    /// is so searched in full).
+    fn gallop_and_bisect(&mut self, top: usize, min: usize, mut jump: bool) -> Result<()> {
         let (mut ok, mut bad) = (top, min - 1);
         let (mut step, mut galloping) = (1, true);
+        if jump && self.found.is_some() {
+            step = (top / DENSE_GALLOP_FRACTION).max(1);
+            jump = false;
+        }
         while ok - bad > 1 {
             let n = if galloping {
                 ok.saturating_sub(step).max(bad + 1)
@@ -377,7 +382,12 @@ impl<'a> Counts<'a> {
                 Some(c) => {
                     ok = n;
                     self.found = Some((n, c));
-                    step *= 2;
+                    step = if jump {
+                        (n / DENSE_GALLOP_FRACTION).max(1)
+                    } else {
+                        step.saturating_mul(2)
+                    };
+                    jump = false;
                 }
                 None => {
                     bad = n;
@@ -515,29 +525,19 @@ fn full_search(
             pool.push((e, (layout, x, start)));
         }
     }
-    // the best of each start family for each layout variant (cubic end condition) first, by
-    // error, then the rest by error; POLISHED_STARTS polished per variant
     pool.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let mut order: Vec<usize> = Vec::new();
-    let mut seen: Vec<(CubicEnd, Start)> = Vec::new();
-    for (i, (_, (layout, _, start))) in pool.iter().enumerate() {
-        if !seen.contains(&(layout.end, *start)) {
-            seen.push((layout.end, *start));
-            order.push(i);
-        }
-    }
-    let rest: Vec<usize> = (0..pool.len()).filter(|i| !order.contains(i)).collect();
-    order.extend(rest);
-    let variants = CubicEnd::ALL
-        .iter()
-        .filter(|&&end| seen.iter().any(|s| s.0 == end))
-        .count();
-    let polished = POLISHED_STARTS.saturating_mul(variants.max(1));
+    let order = polish_order(&pool, target.is_dense());
     let mut best: Option<Seeded> = None;
-    for &i in order.iter().take(polished) {
+    for &i in &order {
         let (e, (layout, x, start)) = &pool[i];
+        let factor = if target.is_dense() {
+            DENSE_BUDGET_FACTOR
+        } else {
+            1
+        };
         let budget = options
             .budget_per_coordinate
+            .saturating_mul(factor)
             .saturating_mul(x.len())
             .clamp(50, MAX_EVALUATIONS);
         let (x, _, evals) = compass(target, layout, x.clone(), *e, budget, &mut scratch);
@@ -559,6 +559,55 @@ fn full_search(
     };
     Ok((attempt, best, evaluations))
 }
+
+/// The starts `pool` (sorted by error) to polish, in order (module docs, step 3). On a sparse
+/// reference the best of each start family for each layout variant (cubic end condition)
+/// first, then the rest by error, [`POLISHED_STARTS`] per variant. On a dense one by error
+/// alone, those within [`DENSE_POLISH_SPREAD`] of the best error, at most
+/// [`DENSE_POLISHED_STARTS`] (each with [`DENSE_BUDGET_FACTOR`] times the budget): there the
+/// budget, not the step size, ends a compass search, and a start's error falls by a tenth to a
+/// third under it, so the starts well behind the best (the generic placements behind the
+/// pruned ones, near the answer) spend it without meeting the tolerance, where a longer search
+/// of the best does.
+fn polish_order(pool: &[(f64, Candidate)], dense: bool) -> Vec<usize> {
+    if dense {
+        let least = pool.first().map_or(0.0, |p| p.0);
+        return (0..pool.len())
+            .take_while(|&i| pool[i].0 <= DENSE_POLISH_SPREAD * least)
+            .take(DENSE_POLISHED_STARTS)
+            .collect();
+    }
+    let mut order: Vec<usize> = Vec::new();
+    let mut seen: Vec<(CubicEnd, Start)> = Vec::new();
+    for (i, (_, (layout, _, start))) in pool.iter().enumerate() {
+        if !seen.contains(&(layout.end, *start)) {
+            seen.push((layout.end, *start));
+            order.push(i);
+        }
+    }
+    let rest: Vec<usize> = (0..pool.len()).filter(|i| !order.contains(i)).collect();
+    order.extend(rest);
+    let variants = CubicEnd::ALL
+        .iter()
+        .filter(|&&end| seen.iter().any(|s| s.0 == end))
+        .count();
+    order.truncate(POLISHED_STARTS.saturating_mul(variants.max(1)));
+    order
+}
+
+/// On a dense reference, the starts polished are those within this factor of the best
+/// start's error ([`polish_order`]).
+const DENSE_POLISH_SPREAD: f64 = 1.15;
+
+/// On a dense reference, the most starts polished per count ([`polish_order`]).
+const DENSE_POLISHED_STARTS: usize = 2;
+
+/// On a dense reference, the compass search's budget is this many times the options'.
+const DENSE_BUDGET_FACTOR: usize = 3;
+
+/// On a dense reference the gallop down from the rise's upper count steps by this fraction of
+/// the first count found ([`Counts::gallop_and_bisect`]).
+const DENSE_GALLOP_FRACTION: usize = 8;
 
 /// The most distinct points the search tries on `target`: four per reference vertex, at
 /// least 64.

@@ -6,7 +6,8 @@ use super::target::Target;
 use super::{Choice, Family, Scratch, Start, GOAL, SEARCH_SAMPLES};
 use crate::error::Result;
 use crate::interp::methods::Interpolant;
-use crate::metrics::curve::{sample_pieces_into, SegmentTree};
+use crate::metrics::curve::SegmentTree;
+use nalgebra::Vector2;
 
 /// The cardinal `a` set to the best of a coarse grid (other families: unchanged), with the
 /// error of the result.
@@ -42,7 +43,7 @@ pub(super) fn error_of(target: &Target, layout: &Layout, x: &[f64], scratch: &mu
 
 /// [`error_of`] when below `limit`, otherwise a value at least `limit`
 /// ([`Target::search_error_below`]): for the stages that keep only what beats their best.
-fn error_below(
+pub(super) fn error_below(
     target: &Target,
     layout: &Layout,
     x: &[f64],
@@ -158,7 +159,9 @@ fn arc_errors(
     s: &[f64],
     scratch: &mut Scratch,
 ) -> Option<Vec<f64>> {
-    sample_pieces_into(curve, &curve.breaks(), SEARCH_SAMPLES, &mut scratch.line).ok()?;
+    curve
+        .sample_pieces_into(SEARCH_SAMPLES, &mut scratch.line)
+        .ok()?;
     let tree = SegmentTree::along(&scratch.line).ok()?;
     let arcs = if target.is_closed() {
         s.len()
@@ -191,7 +194,8 @@ fn arc_errors(
 
 /// Step 3 of the module docs: compass search from `x` (error `e`) within `budget`
 /// evaluations, stopping early at `GOAL` (0.9) of the tolerance (the coarse error a little below
-/// it, so the dense check passes).
+/// it, so the dense check passes). On a dense reference (plain layouts) the search is
+/// [`focused`].
 pub(super) fn compass(
     target: &Target,
     layout: &Layout,
@@ -212,22 +216,17 @@ pub(super) fn compass(
         })
         .collect();
     let floor: Vec<f64> = h.iter().map(|v| v / 256.0).collect();
+    if target.is_dense() && layout.symmetric.is_none() {
+        return focused(target, layout, x, (h, floor), budget, scratch);
+    }
     let mut evals = 0;
     let goal = GOAL * target.tolerance();
     while evals < budget && e > goal {
         let mut improved = false;
-        for j in 0..x.len() {
-            for sign in [1.0, -1.0] {
-                let old = x[j];
-                x[j] = old + sign * h[j];
-                let f = error_below(target, layout, &x, scratch, e);
-                evals += 1;
-                if f < e {
-                    e = f;
-                    improved = true;
-                    break;
-                }
-                x[j] = old;
+        for (j, &hj) in h.iter().enumerate() {
+            if let Some(f) = step(target, layout, &mut x, (j, hj), e, scratch, &mut evals) {
+                e = f;
+                improved = true;
             }
             if evals >= budget {
                 break;
@@ -245,6 +244,109 @@ pub(super) fn compass(
         }
     }
     (x, e, evals)
+}
+
+/// The compass search on a dense reference, whose answers have many points: the error is a
+/// largest distance, which only the points near where it is reached can lower, so the steps
+/// `±h` are tried on those first — the [`FOCUS`] positions around that place (two before it,
+/// two after) and the guides and the cardinal `a` — and the first that lowers the error is
+/// taken (the place then found again); when none does, the focus's steps are halved. It ends
+/// at `GOAL` of the tolerance, at the budget, or when the focus's steps are all below their
+/// floor (`steps`: the initial steps and their floors).
+fn focused(
+    target: &Target,
+    layout: &Layout,
+    mut x: Vec<f64>,
+    steps: (Vec<f64>, Vec<f64>),
+    budget: usize,
+    scratch: &mut Scratch,
+) -> (Vec<f64>, f64, usize) {
+    let (mut h, floor) = steps;
+    let goal = GOAL * target.tolerance();
+    // measured in full once, for the place where the error is reached
+    scratch.worst_point = None;
+    let mut e = error_of(target, layout, &x, scratch);
+    let mut evals = 1;
+    while evals < budget && e > goal && e.is_finite() {
+        let focus = focus_of(target, layout, &x, scratch.worst_point);
+        let mut improved = false;
+        for &j in &focus {
+            if let Some(f) = step(target, layout, &mut x, (j, h[j]), e, scratch, &mut evals) {
+                e = f;
+                improved = true;
+                break;
+            }
+            if evals >= budget {
+                break;
+            }
+        }
+        if !improved {
+            let mut all_small = true;
+            for &j in &focus {
+                h[j] *= 0.5;
+                all_small &= h[j] < floor[j];
+            }
+            if all_small {
+                break;
+            }
+        }
+    }
+    (x, e, evals)
+}
+
+/// The compass step on coordinate `j` of `x` by `h` (`(j, h)`): `x[j] + h`, else `x[j] − h`,
+/// kept at the first whose error is below `e` (returned), `x` restored when neither is; the
+/// evaluations counted in `evals`.
+fn step(
+    target: &Target,
+    layout: &Layout,
+    x: &mut [f64],
+    (j, h): (usize, f64),
+    e: f64,
+    scratch: &mut Scratch,
+    evals: &mut usize,
+) -> Option<f64> {
+    let old = x[j];
+    for sign in [1.0, -1.0] {
+        x[j] = old + sign * h;
+        let f = error_below(target, layout, x, scratch, e);
+        *evals += 1;
+        if f < e {
+            return Some(f);
+        }
+    }
+    x[j] = old;
+    None
+}
+
+/// Positions around the place where the error is reached that [`focused`] moves.
+const FOCUS: usize = 4;
+
+/// The coordinates [`focused`] tries: the [`FOCUS`] positions nearest along the shape to
+/// `worst` (cyclically on a closed target), then the guides and the cardinal `a`; every
+/// coordinate when the place is unknown.
+fn focus_of(
+    target: &Target,
+    layout: &Layout,
+    x: &[f64],
+    worst: Option<Vector2<f64>>,
+) -> Vec<usize> {
+    let k = layout.positions();
+    let Some(w) = worst.and_then(|p| target.search_arc_near(p)) else {
+        return (0..x.len()).collect();
+    };
+    // positions before the place: the focus is the two before it and the two after
+    let before = x[..k].partition_point(|&s| s <= w);
+    let half = FOCUS / 2;
+    let mut focus: Vec<usize> = if layout.closed {
+        (0..FOCUS.min(k))
+            .map(|i| (before + k + i - half) % k)
+            .collect()
+    } else {
+        (before.saturating_sub(half)..(before + half).min(k)).collect()
+    };
+    focus.extend(k..x.len());
+    focus
 }
 
 /// The configuration of `x` measured densely.

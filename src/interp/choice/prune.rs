@@ -1,8 +1,8 @@
 //! Starts from a configuration that meets the tolerance with more points (module docs of
 //! [`super`], step 1, *pruned*): its points taken off one at a time, each time the one whose
-//! removal raises the error least.
+//! removal raises the error least (on a dense reference, many at a time while many remain).
 
-use super::polish::error_of;
+use super::polish::error_below;
 use super::starts::{Candidate, Layout};
 use super::target::Target;
 use super::{Choice, Family, Scratch, Start};
@@ -11,6 +11,9 @@ use nalgebra::Vector2;
 
 /// Pruned starts kept per count: the best removals of the last step.
 const KEPT: usize = 3;
+
+/// Points taken off in one step are more than this many places apart.
+const BATCH_GAP: usize = 2;
 
 /// A configuration in the search's variables: the positions on the shape (arc, in order),
 /// the guides of an open guided curve, the cardinal `a`, the cubic end.
@@ -129,30 +132,71 @@ pub(super) fn pruned_starts(
         } else {
             1..arcs.len() - 1
         };
-        let mut tried: Vec<(f64, Vec<f64>)> = Vec::new();
+        // on a dense reference, many points to take off: up to half of them in one step, the
+        // best removals that are apart (no two within BATCH_GAP places), which leaves the last
+        // steps one by one
+        let excess = arcs.len() - on_shape;
+        let batch = if target.is_dense() {
+            (excess / 2).max(1)
+        } else {
+            1
+        };
+        // the removals the step uses: the KEPT best on the last, else the best from which
+        // `batch` apart ones are chosen (each one chosen rules out at most 2 BATCH_GAP others);
+        // a removal that cannot be among them is measured only until it is known not to be
+        let want = if last_step {
+            KEPT
+        } else {
+            batch + 2 * BATCH_GAP * (batch - 1)
+        };
+        let mut tried: Vec<(f64, usize)> = Vec::with_capacity(want + 1);
         for i in removable {
-            let mut fewer = arcs.clone();
-            fewer.remove(i);
+            let fewer = removed(&arcs, &[i]);
             let step = Layout {
                 on_shape: fewer.len(),
                 ..layout.clone()
             };
             let x = step.variables(&fewer, &seed.guides, seed.a);
-            let e = error_of(target, &step, &x, scratch);
+            let limit = if tried.len() == want {
+                tried[want - 1].0
+            } else {
+                f64::INFINITY
+            };
+            let e = error_below(target, &step, &x, scratch, limit);
             evals += 1;
-            if e.is_finite() {
-                tried.push((e, fewer));
+            if e.is_finite() && e < limit {
+                // after the equal ones: the order of a stable sort of every removal
+                let at = tried.partition_point(|t| t.0 <= e);
+                tried.insert(at, (e, i));
+                tried.truncate(want);
             }
         }
-        tried.sort_by(|a, b| a.0.total_cmp(&b.0));
         if last_step {
-            kept = tried.into_iter().take(KEPT).collect();
+            kept = tried
+                .into_iter()
+                .map(|(e, i)| (e, removed(&arcs, &[i])))
+                .collect();
             break;
         }
-        match tried.into_iter().next() {
-            Some((_, fewer)) => arcs = fewer,
-            None => return (Vec::new(), evals),
+        let mut chosen: Vec<usize> = Vec::new();
+        let len = arcs.len();
+        for &(_, i) in &tried {
+            if chosen.len() == batch {
+                break;
+            }
+            let apart = chosen.iter().all(|&j| {
+                let d = i.abs_diff(j);
+                let d = if layout.closed { d.min(len - d) } else { d };
+                d > BATCH_GAP
+            });
+            if apart {
+                chosen.push(i);
+            }
         }
+        if chosen.is_empty() {
+            return (Vec::new(), evals);
+        }
+        arcs = removed(&arcs, &chosen);
     }
     let starts = kept
         .into_iter()
@@ -162,4 +206,13 @@ pub(super) fn pruned_starts(
         })
         .collect();
     (starts, evals)
+}
+
+/// `arcs` without the places `at`.
+fn removed(arcs: &[f64], at: &[usize]) -> Vec<f64> {
+    arcs.iter()
+        .enumerate()
+        .filter(|(i, _)| !at.contains(i))
+        .map(|(_, &a)| a)
+        .collect()
 }

@@ -7,7 +7,7 @@ use crate::curve::ParametricCurve;
 use crate::error::{Error, Result};
 use crate::interp::methods::Method;
 use crate::metrics::curve::{
-    curvature_profile, distances_to, sample_pieces_into, segment_distance, smoothness, SegmentTree,
+    curvature_profile, distances_to, segment_distance, smoothness, SegmentTree,
 };
 use crate::shapes::Shape;
 use nalgebra::Vector2;
@@ -262,6 +262,18 @@ impl Target {
         (i, if s1 > s0 { (s - s0) / (s1 - s0) } else { 0.0 })
     }
 
+    /// The arc position of the vertex of the searched reference ([`Target::search_reference`])
+    /// nearest to `p`: where on the shape a point of a curve lies, roughly (to the vertices'
+    /// spacing); `None` for a point that is not finite.
+    pub(super) fn search_arc_near(&self, p: Vector2<f64>) -> Option<f64> {
+        let (points, arcs) = self.search_reference();
+        let nearest = (0..points.len())
+            .map(|i| ((points[i] - p).norm_squared(), i))
+            .filter(|(d, _)| d.is_finite())
+            .min_by(|a, b| a.0.total_cmp(&b.0))?;
+        Some(arcs[nearest.1])
+    }
+
     /// The arc position of the reference point nearest to `p` (on a closed target in
     /// `[0, L]`).
     pub(super) fn arc_of(&self, p: Vector2<f64>) -> f64 {
@@ -467,7 +479,7 @@ impl Target {
         let curve = method.curve(points, self.closed)?;
         let breaks = curve.breaks();
         let mut line = Vec::new();
-        sample_pieces_into(&curve, &breaks, FINAL_SAMPLES, &mut line)?;
+        curve.sample_pieces_into(FINAL_SAMPLES, &mut line)?;
         let distances = distances_to(&line, &self.tree)?;
         let profile = curvature_profile(&curve, &breaks, CURVATURE_SAMPLES)?;
         Ok(Measure {
@@ -501,7 +513,10 @@ impl Target {
         let Ok(curve) = method.curve(points, self.closed) else {
             return f64::INFINITY;
         };
-        if sample_pieces_into(&curve, &curve.breaks(), SEARCH_SAMPLES, &mut buf.line).is_err() {
+        if curve
+            .sample_pieces_into(SEARCH_SAMPLES, &mut buf.line)
+            .is_err()
+        {
             return f64::INFINITY;
         }
         // the simplification is within COARSE_FRACTION of the tolerance of the reference (in
@@ -511,7 +526,8 @@ impl Target {
         if crate::error::finite_points("curve sample", &buf.line).is_err() {
             return f64::INFINITY;
         }
-        let (away, _) = reference.farthest_below(&buf.line, limit);
+        let (away, at) = reference.farthest_below_from(&buf.line, limit, buf.worst_sample);
+        buf.worst_sample = at;
         if away >= limit {
             return away;
         }
@@ -519,7 +535,16 @@ impl Target {
         let Ok(curve) = SegmentTree::along(&buf.line) else {
             return f64::INFINITY;
         };
-        let (missed, _) = curve.farthest_below(reference.points(), limit);
+        let (missed, vertex) =
+            curve.farthest_below_from(reference.points(), limit, buf.worst_vertex);
+        buf.worst_vertex = vertex;
+        if missed < limit {
+            buf.worst_point = if missed > away {
+                vertex.map(|v| reference.points()[v])
+            } else {
+                at.map(|i| buf.line[i])
+            };
+        }
         away.max(missed)
     }
 }

@@ -347,20 +347,54 @@ fn densified(ring: &[nalgebra::Vector2<f64>], n: usize) -> Vec<nalgebra::Vector2
 /// `splinelab fewest`'s search with its default options, every method, on the coast of
 /// Sicily densified to `n` points (a digitised outline).
 fn fewest_outline(n: usize) -> Result<Runner> {
-    use crate::interp::choice::Family;
-    use crate::study::outline::{default_options, fewest, Tolerance};
-    let outline = [crate::input::Contour {
+    Ok(fewest_runner(vec![crate::input::Contour {
         points: densified(&crate::seeds::seed004::coastline(), n),
         closed: true,
-    }];
-    let families = [
-        Family::Angular,
-        Family::Cardinal,
-        Family::Cubic,
-        Family::BSpline,
-        Family::Linear,
-    ];
-    Ok(Box::new(move || {
+    }]))
+}
+
+/// The world map of the SVG corpus (`@svg-maps/world`, 1 533 contours, 95 513 points), read
+/// as `splinelab fewest` reads it.
+fn world_map() -> Result<Vec<crate::input::Contour>> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/svg_corpus/svg-maps-world.svg");
+    crate::report::user::outline::read_outline(&path, &Default::default()).map_err(|e| match e {
+        Error::Core(e) => e,
+        other => crate::error::Error::Parse {
+            what: "world map of the SVG corpus",
+            line: 1,
+            column: 1,
+            message: other.to_string(),
+        },
+    })
+}
+
+/// `splinelab fewest`'s search with its default options, every method, on the whole world map.
+fn fewest_world(_: usize) -> Result<Runner> {
+    Ok(fewest_runner(world_map()?))
+}
+
+/// `splinelab fewest`'s search with its default options, every method, on the world map's
+/// contour with the most vertices (a real digitised coast).
+fn fewest_country(_: usize) -> Result<Runner> {
+    let largest = world_map()?
+        .into_iter()
+        .max_by_key(|c| c.points.len())
+        .ok_or(crate::error::Error::TooFewPoints {
+            what: "contours of the world map",
+            needed: 1,
+            got: 0,
+        })?;
+    Ok(fewest_runner(vec![largest]))
+}
+
+/// One run of `splinelab fewest`'s search with its default options and every method on
+/// `outline`: the points counted, summed over the methods.
+fn fewest_runner(outline: Vec<crate::input::Contour>) -> Runner {
+    use crate::interp::choice::Family;
+    use crate::study::outline::{default_options, fewest, Tolerance};
+    let families = Family::ALL;
+    Box::new(move || {
         let found = fewest(
             &outline,
             Tolerance::default(),
@@ -369,7 +403,7 @@ fn fewest_outline(n: usize) -> Result<Runner> {
             &|_| {},
         )?;
         Ok(black_box(found.methods.iter().map(|m| m.counted()).sum()))
-    }))
+    })
 }
 
 /// The polygon's exact fewest points ([`crate::interp::choice::search`], linear) on the coast
@@ -402,7 +436,7 @@ fn symbolic_torus(_: usize) -> Result<Runner> {
 }
 
 /// Every workload.
-pub const WORKLOADS: [Workload; 23] = [
+pub const WORKLOADS: [Workload; 25] = [
     Workload {
         id: "t6-table",
         description: "the whole T6 computation (4 rows, Hermite matrix form, all measures); swept as t6-row",
@@ -570,6 +604,22 @@ pub const WORKLOADS: [Workload; 23] = [
         size: 10_000,
         sweep: &[],
         setup: fewest_outline,
+    },
+    Workload {
+        id: "fewest-country",
+        description: "`splinelab fewest` with its default options, the five methods, on the contour of the world map (tests/data/svg_corpus/svg-maps-world.svg) with the most vertices, 4 897 (all cores; points: the counts found)",
+        unit: "outline",
+        size: 1,
+        sweep: &[],
+        setup: fewest_country,
+    },
+    Workload {
+        id: "fewest-world",
+        description: "`splinelab fewest` with its default options, the five methods, on the whole world map (tests/data/svg_corpus/svg-maps-world.svg: 1 533 contours, 95 513 points; all cores; points: the counts found)",
+        unit: "map",
+        size: 1,
+        sweep: &[],
+        setup: fewest_world,
     },
     Workload {
         id: "polygon-optimum",
