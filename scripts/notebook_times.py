@@ -79,8 +79,9 @@ def run_cell(kc, source):
             continue
         kind = m["msg_type"]
         if kind in ("execute_result", "display_data"):
-            html = m["content"]["data"].get("text/html", "")
-            figure = figure or "<svg" in html or "<img" in html
+            data = m["content"]["data"]
+            html = data.get("text/html", "")
+            figure = figure or "image/png" in data or "<svg" in html or "<img" in html
         elif kind == "error":
             error = m["content"].get("evalue", "error")
         elif kind == "status" and m["content"]["execution_state"] == "idle":

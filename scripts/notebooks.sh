@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # Executes the notebooks headless with the evcxr Rust kernel, installing what is missing:
 # Jupyter's minimal execution stack (nbclient, in a virtual environment) and evcxr_jupyter
-# (cargo install, pinned). Executed copies go to out/notebooks/; the committed notebooks keep
-# no outputs. Fails, naming the notebook and cell, on any cell error, compile error or panic.
+# (cargo install, pinned). Executed copies go to out/notebooks/. Fails, naming the notebook and
+# cell, on any cell error, compile error or panic, and when a committed notebook's stored
+# outputs differ from the fresh run's (scripts/check_notebooks.py --stale): the notebooks are
+# kept executed, so that they show their outputs without a run, and `--store` rewrites them.
 #
 # Each executed notebook is also written as HTML with its figures (out/notebooks/<name>.html),
 # its mathematics typeset offline by a vendored MathJax (out/notebooks/mathjax/), and checked in
 # headless Chromium (scripts/check_html.py: no unrendered TeX; screenshots in screens/).
 #
 # usage: scripts/notebooks.sh [NOTEBOOK.ipynb ...]   (default: notebooks/[0-9][0-9]-*.ipynb)
+#        scripts/notebooks.sh --store [NOTEBOOK.ipynb ...]  executes them and stores each run's
+#                                                    outputs in the notebook itself
 #        scripts/notebooks.sh --site                 out/site/: the last run's notebook pages,
 #                                                    cargo doc, figures and tables, one index
 #        scripts/notebooks.sh --try-it NOTEBOOK.ipynb  times its Try-it edit in a live kernel
@@ -154,7 +158,9 @@ if [ "${1:-}" = "--try-it" ]; then
     exec "$venv/bin/python" "$root/scripts/notebook_times.py" --try-it "${paths[@]}"
 fi
 
-# 7. Execute.
+# 7. Execute: each notebook's outputs checked against its stored ones, or stored (--store).
+store=0
+if [ "${1:-}" = "--store" ]; then store=1; shift; fi
 if [ "$#" -gt 0 ]; then notebooks=("$@"); else notebooks=(notebooks/[0-9][0-9]-*.ipynb); fi
 out="$root/out/notebooks"
 mkdir -p "$out/mathjax"
@@ -168,7 +174,13 @@ for nb in "${notebooks[@]}"; do
     if "$venv/bin/jupyter-execute" --kernel_name=rust --timeout="$CELL_TIMEOUT" \
         --output="${name}_executed" "$nb"; then
         mv "$dir/${name}_executed.ipynb" "$out/${name}.ipynb"
+        if [ "$store" = 1 ]; then
+            keep=(--store "$out/${name}.ipynb" "$nb")
+        else
+            keep=(--stale "$nb" "$out/${name}.ipynb")
+        fi
         if "$venv/bin/python" "$root/scripts/check_notebooks.py" "$out/${name}.ipynb" &&
+            "$venv/bin/python" "$root/scripts/check_notebooks.py" "${keep[@]}" &&
             "$venv/bin/jupyter-nbconvert" --to html --log-level=WARN \
                 --template-file "$root/scripts/nbconvert/offline.html.j2" \
                 --HTMLExporter.mathjax_url=mathjax/tex-svg-full.js "$out/${name}.ipynb"; then

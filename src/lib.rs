@@ -73,6 +73,7 @@ pub mod bspline;
 pub(crate) mod curve;
 pub(crate) mod domain;
 pub(crate) mod error;
+pub mod exact;
 pub(crate) mod grid;
 pub mod hermite;
 mod horner;
@@ -98,7 +99,7 @@ pub mod tensor;
 mod tridiagonal;
 
 pub use bezier::bernstein::{bernstein3, bernstein_all, bernstein_sum};
-pub use bezier::codice7::report_codice7_net;
+pub use bezier::codice7::{codice7_plane, report_codice7_net};
 pub use bezier::de_casteljau::{
     de_casteljau, de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface,
 };

@@ -49,3 +49,10 @@ pub(crate) fn rounded(c: f64, digits: usize) -> String {
     let text = format!("{:.*e}", digits.max(1) - 1, c);
     decimal(text.parse::<f64>().unwrap_or(c))
 }
+
+/// Text for HTML and MathML: `&`, `<`, `>` escaped.
+pub(crate) fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}

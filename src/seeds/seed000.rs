@@ -3,6 +3,8 @@
 //! These are the report's claims, shown beside ours in every table; they never enter a
 //! computation.
 
+use crate::exact::{self, Polynomial, Rational};
+
 /// One printed row: a case and its x, y, z values as printed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PrintedRow {
@@ -84,4 +86,17 @@ pub fn agrees_to_printed(printed: &str, value: f64) -> bool {
     let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len()) as i32;
     let quantum = 10f64.powi(exponent - decimals);
     value.is_finite() && (value / quantum).round() == (target / quantum).round()
+}
+
+/// §1's cubic Hermite basis as printed, `H₀ = 1 − 3t² + 2t³; H₁ = t − 2t² + t³;
+/// H₂ = t³ − t²; H₃ = 3t² − 2t³`: each row the coefficients of `1, t, t², t³`.
+pub const HERMITE_BASIS: [[i64; 4]; 4] =
+    [[1, 0, -3, 2], [0, 1, -2, 1], [0, 0, -1, 1], [0, 0, 3, -2]];
+
+/// [`HERMITE_BASIS`] as exact polynomials, to compare a derived basis with (notebook 01).
+pub fn hermite_basis_printed() -> Vec<Polynomial<Rational>> {
+    HERMITE_BASIS
+        .iter()
+        .map(|row| Polynomial::new(row.iter().map(|&c| exact::int(c)).collect()))
+        .collect()
 }

@@ -4,6 +4,7 @@
 //! LaTeX beside it for front ends that prefer it.
 
 use super::print::{escape, Formula};
+use crate::exact::{Polynomial, Rational, Written};
 use nalgebra::Matrix4;
 
 /// One cell of mathematics, in LaTeX and in presentation MathML.
@@ -214,15 +215,17 @@ impl MathTable {
 impl Formula {
     /// Shows the formula as rendered mathematics in a notebook (MathML and LaTeX).
     pub fn evcxr_display(&self) {
-        println!(
-            "EVCXR_BEGIN_CONTENT text/html\n<math display=\"block\">{}</math>\nEVCXR_END_CONTENT",
-            self.mathml()
-        );
-        println!(
-            "EVCXR_BEGIN_CONTENT text/latex\n$${}$$\nEVCXR_END_CONTENT",
-            self.latex()
-        );
+        show_math(&self.mathml(), &self.latex());
     }
+}
+
+/// Prints one notebook output with a `text/html` (block MathML) and a `text/latex`
+/// representation.
+fn show_math(mathml: &str, latex: &str) {
+    println!(
+        "EVCXR_BEGIN_CONTENT text/html\n<math display=\"block\">{mathml}</math>\nEVCXR_END_CONTENT"
+    );
+    println!("EVCXR_BEGIN_CONTENT text/latex\n$${latex}$$\nEVCXR_END_CONTENT");
 }
 
 /// Text for `\text{…}`: LaTeX's special characters escaped.
@@ -239,4 +242,198 @@ fn latex_text(s: &str) -> String {
         }
     }
     out
+}
+
+impl Math {
+    /// A name as LaTeX writes it — letters, digits, commands (`\det`, `\lambda`), each
+    /// with an optional subscript and superscript, braced or one character: `K`, `H_0(t)`,
+    /// `K^{-1}`, `A^T`, `C^{(ij)}`, `N_{i,3}`, `\det K`, `\lambda_k(H_j)` — in both notations
+    /// (the LaTeX as given, the MathML parsed from it).
+    pub fn name(name: &str) -> Math {
+        let chars: Vec<char> = name.chars().collect();
+        Math {
+            latex: name.to_string(),
+            mathml: name_mathml(&chars),
+        }
+    }
+
+    /// A polynomial with exact coefficients in the variable `var`.
+    pub fn polynomial(p: &Polynomial<Rational>, var: &str) -> Math {
+        Math {
+            latex: p.latex(var),
+            mathml: p.mathml(var),
+        }
+    }
+
+    /// Shows the mathematics inline in a notebook (MathML and LaTeX).
+    pub fn evcxr_display(&self) {
+        show_math(&self.mathml, &self.latex);
+    }
+}
+
+impl<W: Written> From<&W> for Math {
+    fn from(x: &W) -> Math {
+        Math {
+            latex: x.latex(),
+            mathml: x.mathml(),
+        }
+    }
+}
+
+/// The Greek letters a name may write as commands, by their LaTeX names.
+const GREEK: [(&str, char); 24] = [
+    ("alpha", 'α'),
+    ("beta", 'β'),
+    ("gamma", 'γ'),
+    ("delta", 'δ'),
+    ("epsilon", 'ε'),
+    ("zeta", 'ζ'),
+    ("eta", 'η'),
+    ("theta", 'θ'),
+    ("iota", 'ι'),
+    ("kappa", 'κ'),
+    ("lambda", 'λ'),
+    ("mu", 'μ'),
+    ("nu", 'ν'),
+    ("xi", 'ξ'),
+    ("pi", 'π'),
+    ("rho", 'ρ'),
+    ("sigma", 'σ'),
+    ("tau", 'τ'),
+    ("phi", 'φ'),
+    ("chi", 'χ'),
+    ("psi", 'ψ'),
+    ("omega", 'ω'),
+    ("Lambda", 'Λ'),
+    ("Delta", 'Δ'),
+];
+
+/// MathML of a name's characters: atoms (a command, a digit run, a letter, another
+/// character), each with the subscript and superscript that follow it.
+fn name_mathml(chars: &[char]) -> String {
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let (atom, next) = name_atom(chars, i);
+        i = next;
+        let (mut sub, mut sup) = (None, None);
+        while i < chars.len() && (chars[i] == '_' || chars[i] == '^') {
+            let (group, next) = name_group(chars, i + 1);
+            let group = Some(name_mathml(group));
+            if chars[i] == '_' {
+                sub = group;
+            } else {
+                sup = group;
+            }
+            i = next;
+        }
+        let wrap = |m: String| format!("<mrow>{m}</mrow>");
+        out.push_str(&match (sub, sup) {
+            (None, None) => atom,
+            (Some(b), None) => format!("<msub>{atom}{}</msub>", wrap(b)),
+            (None, Some(p)) => format!("<msup>{atom}{}</msup>", wrap(p)),
+            (Some(b), Some(p)) => format!("<msubsup>{atom}{}{}</msubsup>", wrap(b), wrap(p)),
+        });
+    }
+    out
+}
+
+/// The atom at `i` as MathML and the index after it (spaces give an empty atom).
+fn name_atom(chars: &[char], i: usize) -> (String, usize) {
+    let c = chars[i];
+    let run = |from: usize, keep: fn(char) -> bool| {
+        let end = chars[from..]
+            .iter()
+            .position(|&c| !keep(c))
+            .map_or(chars.len(), |k| from + k);
+        (chars[from..end].iter().collect::<String>(), end)
+    };
+    match c {
+        '\\' => {
+            let (word, end) = run(i + 1, |c| c.is_ascii_alphabetic());
+            let end = end.max(i + 1);
+            match GREEK.iter().find(|(w, _)| *w == word) {
+                Some((_, g)) => (format!("<mi>{g}</mi>"), end),
+                // a function name (`\det`): upright, then the invisible function application,
+                // which spaces it from its argument
+                None => (format!("<mi>{}</mi><mo>\u{2061}</mo>", escape(&word)), end),
+            }
+        }
+        c if c.is_ascii_digit() => {
+            let (digits, end) = run(i, |c| c.is_ascii_digit());
+            (format!("<mn>{digits}</mn>"), end)
+        }
+        ' ' => (String::new(), i + 1),
+        '-' => ("<mo>\u{2212}</mo>".to_string(), i + 1),
+        c if c.is_alphabetic() => (format!("<mi>{}</mi>", escape(&c.to_string())), i + 1),
+        c => (format!("<mo>{}</mo>", escape(&c.to_string())), i + 1),
+    }
+}
+
+/// The script group at `i` (`{…}` with nested braces, or one character) and the index after.
+fn name_group(chars: &[char], i: usize) -> (&[char], usize) {
+    match chars.get(i) {
+        None => (&[], i),
+        Some('{') => {
+            let mut depth = 0;
+            for (k, &c) in chars.iter().enumerate().skip(i) {
+                match c {
+                    '{' => depth += 1,
+                    '}' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            return (&chars[i + 1..k], k + 1);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            (&chars[i + 1..], chars.len())
+        }
+        Some(_) => (&chars[i..i + 1], i + 1),
+    }
+}
+
+impl MathTable {
+    /// An empty table, to which [`MathTable::eq`] adds rows.
+    pub fn new() -> MathTable {
+        MathTable {
+            header: Vec::new(),
+            rows: Vec::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    /// The table with one more row `name = value` (`name` as [`Math::name`] reads it):
+    /// `MathTable::new().eq("K", &k).eq("K^{-1}", &k_inv)`.
+    pub fn eq(mut self, name: &str, value: impl Into<Math>) -> MathTable {
+        let mut label = Math::name(name);
+        label.latex.push_str(" =");
+        label.mathml.push_str("<mo>=</mo>");
+        self.rows.push(vec![label, value.into()]);
+        self
+    }
+
+    /// Polynomials with exact coefficients named `name₀, name₁, …` of the variable `var`, one
+    /// row each: `MathTable::polynomials("H", "t", &basis)`.
+    pub fn polynomials(name: &str, var: &str, polynomials: &[Polynomial<Rational>]) -> MathTable {
+        polynomials
+            .iter()
+            .enumerate()
+            .fold(MathTable::new(), |table, (i, p)| {
+                table.eq(&format!("{name}_{{{i}}}({var})"), Math::polynomial(p, var))
+            })
+    }
+
+    /// The table with one more note under it (plain text).
+    pub fn note(mut self, text: &str) -> MathTable {
+        self.notes.push(text.to_string());
+        self
+    }
+}
+
+impl Default for MathTable {
+    fn default() -> MathTable {
+        MathTable::new()
+    }
 }

@@ -1013,12 +1013,7 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
     })
 }
 
-/// Text for HTML and MathML: `&`, `<`, `>` escaped.
-pub(crate) fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-}
+pub(crate) use crate::printed::escape;
 
 #[cfg(test)]
 mod tests {

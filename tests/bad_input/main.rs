@@ -649,6 +649,7 @@ mod blending;
 mod bspline;
 mod choice;
 mod domain;
+mod exact;
 mod fast_paths;
 mod grid;
 mod hermite;
@@ -680,6 +681,7 @@ fn all_cases() -> Vec<Case> {
     all.extend(bspline::cases());
     all.extend(choice::cases());
     all.extend(domain::cases());
+    all.extend(exact::cases());
     all.extend(fast_paths::cases());
     all.extend(grid::cases());
     all.extend(hermite::cases());
