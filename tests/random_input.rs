@@ -2018,7 +2018,14 @@ proptest! {
                         prop_assert_eq!(fast.len(), reference.len());
                         let scale = max_norm(&p).max(max_norm(&reference));
                         for (k, (a, b)) in fast.iter().zip(&reference).enumerate() {
-                            prop_assert!(amax(&(a - b)) <= 1e-10 * scale + FLOOR, "sample_pieces_into point {}: {:?} vs {:?}", k, a, b);
+                            // both evaluate the arc's half-angle form, which divides by sin γ,
+                            // and γ carries a rounding error of a few ε: a point at distance
+                            // |b| from a piece of chord L is known only to about ε|b|²/L (a
+                            // huge loop of a short piece), whatever path computes it
+                            let j = (k / 23).min(c.pieces() - 1);
+                            let chord = amax(&(c.point((j + 1) as f64) - c.point(j as f64)));
+                            let conditioning = 64.0 * f64::EPSILON * amax(b) * (amax(b) / chord.max(f64::MIN_POSITIVE));
+                            prop_assert!(amax(&(a - b)) <= 1e-10 * scale + FLOOR + conditioning, "sample_pieces_into point {}: {:?} vs {:?} (the arc's conditioning {:e})", k, a, b, conditioning);
                         }
                     }
                     (Err(_), Err(_)) => {}
