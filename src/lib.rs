@@ -24,6 +24,10 @@
 //!   B-spline collocation.
 //! - [`blending`]: seed 003's blending functions, the printed `bspline` and OpenGL-evaluator
 //!   procedures, the sliding bicubic surface.
+//! - [`exact`]: exact rational arithmetic for the derivations — [`exact::Rational`], matrices
+//!   of them with a solve, inverse and determinant written once over `f64` and rationals,
+//!   polynomials, the conditions that define a basis (`K`, `K⁻¹`, the Hermite basis) and the
+//!   Bernstein polynomials; the notebooks compute and assert the seeds' matrices with it.
 //! - [`symbolic`]: the same generic code run on an expression type inside the dual numbers,
 //!   so formulas and numbers come from one path: the partials of any surface
 //!   ([`symbolic::surface_formulas`]; [`surface!`] writes one's own), curves on a piece,
