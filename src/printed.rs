@@ -56,3 +56,24 @@ pub(crate) fn escape(text: &str) -> String {
         .replace('<', "&lt;")
         .replace('>', "&gt;")
 }
+
+/// A matrix in LaTeX: `\begin{pmatrix}a & b \\ c & d\end{pmatrix}`, from its cells' LaTeX,
+/// row by row.
+pub(crate) fn latex_matrix(rows: &[Vec<String>]) -> String {
+    let rows: Vec<String> = rows.iter().map(|r| r.join(" & ")).collect();
+    format!("\\begin{{pmatrix}}{}\\end{{pmatrix}}", rows.join(" \\\\ "))
+}
+
+/// A matrix in presentation MathML, from its cells' MathML, row by row; the brackets drawn as
+/// the table's rounded side borders (a stretched `(` needs an OpenType MATH font, which a
+/// reader's browser may not have).
+pub(crate) fn mathml_matrix(rows: &[Vec<String>]) -> String {
+    let rows: String = rows
+        .iter()
+        .map(|r| {
+            let cells: String = r.iter().map(|c| format!("<mtd>{c}</mtd>")).collect();
+            format!("<mtr>{cells}</mtr>")
+        })
+        .collect();
+    format!("<mrow><mtable style=\"border-left:1.5px solid;border-right:1.5px solid;border-radius:0.5em;padding:0 0.3em\">{rows}</mtable></mrow>")
+}

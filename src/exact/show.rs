@@ -78,27 +78,11 @@ impl Written for DMatrix<Rational> {
     }
 
     fn latex(&self) -> String {
-        let rows: Vec<String> = self
-            .row_iter()
-            .map(|r| r.iter().map(Written::latex).collect::<Vec<_>>().join(" & "))
-            .collect();
-        format!("\\begin{{pmatrix}}{}\\end{{pmatrix}}", rows.join(" \\\\ "))
+        crate::printed::latex_matrix(&cells(self, Written::latex))
     }
 
     fn mathml(&self) -> String {
-        let rows: String = self
-            .row_iter()
-            .map(|r| {
-                let cells: String = r
-                    .iter()
-                    .map(|x| format!("<mtd>{}</mtd>", x.mathml()))
-                    .collect();
-                format!("<mtr>{cells}</mtr>")
-            })
-            .collect();
-        // brackets drawn as the table's rounded side borders, as `Math::matrix` does: a
-        // stretched `(` needs an OpenType MATH font, which a reader's browser may not have
-        format!("<mrow><mtable style=\"border-left:1.5px solid;border-right:1.5px solid;border-radius:0.5em;padding:0 0.3em\">{rows}</mtable></mrow>")
+        crate::printed::mathml_matrix(&cells(self, Written::mathml))
     }
 }
 
@@ -117,6 +101,13 @@ impl Polynomial<Rational> {
     pub fn mathml(&self, var: &str) -> String {
         polynomial_mathml(self, var)
     }
+}
+
+/// The entries of `m` written by `write`, row by row.
+fn cells(m: &DMatrix<Rational>, write: fn(&Rational) -> String) -> Vec<Vec<String>> {
+    m.row_iter()
+        .map(|r| r.iter().map(write).collect())
+        .collect()
 }
 
 /// The terms `(sign, |c|, k)` of the nonzero coefficients, ascending powers.

@@ -70,29 +70,19 @@ impl Math {
         let rows: Vec<Vec<String>> = (0..4)
             .map(|i| (0..4).map(|j| cell(m[(i, j)])).collect())
             .collect();
-        let latex = format!(
-            "\\begin{{pmatrix}}{}\\end{{pmatrix}}",
-            rows.iter()
-                .map(|r| r.join(" & "))
-                .collect::<Vec<_>>()
-                .join(" \\\\ ")
-        );
-        let mathml = format!(
-            // brackets drawn as the table's rounded side borders: a stretched `(` needs an
-            // OpenType MATH font, which a reader's browser may not have
-            "<mrow><mtable style=\"border-left:1.5px solid;border-right:1.5px solid;border-radius:0.5em;padding:0 0.3em\">{}</mtable></mrow>",
-            rows.iter()
-                .map(|r| format!(
-                    "<mtr>{}</mtr>",
-                    r.iter()
-                        .map(|x| match x.strip_prefix('-') {
-                            Some(pos) => format!("<mtd><mo>\u{2212}</mo><mn>{pos}</mn></mtd>"),
-                            None => format!("<mtd><mn>{x}</mn></mtd>"),
-                        })
-                        .collect::<String>()
-                ))
-                .collect::<String>()
-        );
+        let latex = crate::printed::latex_matrix(&rows);
+        let mathml_cells: Vec<Vec<String>> = rows
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|x| match x.strip_prefix('-') {
+                        Some(pos) => format!("<mo>\u{2212}</mo><mn>{pos}</mn>"),
+                        None => format!("<mn>{x}</mn>"),
+                    })
+                    .collect()
+            })
+            .collect();
+        let mathml = crate::printed::mathml_matrix(&mathml_cells);
         Math { latex, mathml }
     }
 }

@@ -232,15 +232,8 @@ pub(super) fn compass(
                 break;
             }
         }
-        if !improved {
-            let mut all_small = true;
-            for (hj, fj) in h.iter_mut().zip(&floor) {
-                *hj *= 0.5;
-                all_small &= *hj < *fj;
-            }
-            if all_small {
-                break;
-            }
+        if !improved && halve(&mut h, &floor, 0..floor.len()) {
+            break;
         }
     }
     (x, e, evals)
@@ -280,18 +273,22 @@ fn focused(
                 break;
             }
         }
-        if !improved {
-            let mut all_small = true;
-            for &j in &focus {
-                h[j] *= 0.5;
-                all_small &= h[j] < floor[j];
-            }
-            if all_small {
-                break;
-            }
+        if !improved && halve(&mut h, &floor, focus.iter().copied()) {
+            break;
         }
     }
     (x, e, evals)
+}
+
+/// Halves the steps `h[j]` of the coordinates `which`; whether all of them are now below
+/// their floors (the search has converged on them).
+fn halve(h: &mut [f64], floor: &[f64], which: impl Iterator<Item = usize>) -> bool {
+    let mut all_small = true;
+    for j in which {
+        h[j] *= 0.5;
+        all_small &= h[j] < floor[j];
+    }
+    all_small
 }
 
 /// The compass step on coordinate `j` of `x` by `h` (`(j, h)`): `x[j] + h`, else `x[j] − h`,
