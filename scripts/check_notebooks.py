@@ -28,7 +28,7 @@ import json
 import sys
 
 # The Debug text of splinelab values that have a display of their own.
-DEBUG_DUMPS = ("Figure {", "Table {", "Html {", "SurfaceFormulas {", "CurveFormulas {",
+DEBUG_DUMPS = ("Figure {", "Animation {", "Table {", "Html {", "SurfaceFormulas {", "CurveFormulas {",
                "BasisFormulas {", "PatchFormulas {", "MathTable {", "Formula {")
 
 

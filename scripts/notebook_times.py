@@ -23,7 +23,8 @@ def stamp(text):
 
 def shows_something(cell):
     return any(
-        "text/html" in o.get("data", {}) or o.get("output_type") == "stream"
+        any(m == "text/html" or m.startswith("image/") for m in o.get("data", {}))
+        or o.get("output_type") == "stream"
         for o in cell.get("outputs", [])
     )
 

@@ -4,6 +4,15 @@ use crate::error::Result;
 use nalgebra::SVector;
 use num_dual::{Dual2_64, Dual64, DualNum};
 
+/// Plane points from `(x, y)` pairs, as a cell writes them:
+/// `plane_points(&[(0.0, 0.0), (1.0, 2.2)])`.
+pub fn plane_points(pairs: &[(f64, f64)]) -> Vec<nalgebra::Vector2<f64>> {
+    pairs
+        .iter()
+        .map(|&(x, y)| nalgebra::Vector2::new(x, y))
+        .collect()
+}
+
 /// A parametric curve `C(t) ∈ ℝᴺ` given by one formula generic over the number type (the
 /// curve counterpart of [`crate::surface::ParametricSurface`]; kurbo's `ParamCurve`).
 ///

@@ -105,15 +105,16 @@ mod tridiagonal;
 pub use bezier::bernstein::{bernstein3, bernstein_all, bernstein_sum};
 pub use bezier::codice7::{codice7_plane, report_codice7_net};
 pub use bezier::de_casteljau::{
-    de_casteljau, de_casteljau_levels, de_casteljau_recursive, de_casteljau_surface,
+    de_casteljau, de_casteljau_levels, de_casteljau_recursive, de_casteljau_recursive_counted,
+    de_casteljau_surface, BezierParameter,
 };
 pub use bezier::patch::BezierPatch;
 pub use blending::functions::{lagrange4, printed_setbval, uniform_bspline4, Blending};
-pub use bspline::basis::BSplineBasis;
+pub use bspline::basis::{BSplineBasis, KnotScalar};
 pub use bspline::curve::BSplineCurve;
 pub use bspline::fit::{fit_bspline, BSplineFit};
 pub use bspline::knots::{EndKnots, KnotVector};
-pub use curve::{signed_curvature, ParametricCurve};
+pub use curve::{plane_points, signed_curvature, ParametricCurve};
 pub use domain::{Interval, Partition, Rect, Span};
 pub use error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
 pub use grid::Grid;
@@ -129,6 +130,7 @@ pub use interp::cardinal::{cardinal_matrix, CardinalSpline};
 pub use interp::cubic::{CubicSpline, EndCondition};
 pub use interp::linear::PiecewiseLinear;
 pub use interp::methods::{CubicEnd, Interpolant, Method};
+pub use interp::moments::moment_system;
 pub use interp::polynomial::{runge, Lagrange, NodeFamily, PowerPolynomial};
 pub use mesh::{Mesh, PARALLEL_TANGENTS};
 pub use metrics::surface::{compare, matlab_norm, CoordErrors};

@@ -22,10 +22,10 @@ pub use nalgebra::{DMatrix, Matrix4, SVector, Vector1, Vector2, Vector3};
 pub use num_dual::{Dual2_64, Dual3_64, Dual64, DualNum, HyperDual64};
 
 pub use crate::{
-    AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline, CubicSpline,
-    EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSurface, Interval,
-    KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve, ParametricSurface, Parametrization,
-    Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
+    plane_points, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline,
+    CubicSpline, EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSurface,
+    Interval, KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve, ParametricSurface,
+    Parametrization, Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
 };
 // formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and
 // `surface!`, a user surface written once for numbers and formulas alike

@@ -321,3 +321,112 @@ fn the_hermite_basis_is_a_transpose_b_and_codice_7_errs_in_one_entry() {
         assert_eq!(m, DMatrix::from_fn(4, 4, |i, j| net.planes()[k][(i, j)]));
     }
 }
+
+/// Strictly increasing integer nodes (steps 1–4) and integer values, 3–9 points.
+fn integer_data() -> impl Strategy<Value = (Vec<i64>, Vec<i64>)> {
+    (3usize..=9).prop_flat_map(|n| {
+        (
+            proptest::collection::vec(1i64..=4, n - 1),
+            proptest::collection::vec(-9i64..=9, n),
+        )
+            .prop_map(|(steps, y)| {
+                let mut x = vec![0i64];
+                for s in steps {
+                    x.push(x.last().unwrap() + s);
+                }
+                (x, y)
+            })
+    })
+}
+
+fn ends() -> [splinelab::EndCondition<1>; 4] {
+    [
+        splinelab::EndCondition::clamped(1.0, -0.5),
+        splinelab::EndCondition::Natural,
+        splinelab::EndCondition::Cyclic,
+        splinelab::EndCondition::Anticyclic,
+    ]
+}
+
+proptest! {
+    /// The dense moment system, solved exactly, gives the moments of the O(n) tridiagonal
+    /// solve of `CubicSpline` (its `s″` at the nodes) to rounding, for every end condition;
+    /// and the same system in `f64` is the exact one rounded.
+    #[test]
+    fn the_moment_system_solved_exactly_is_the_splines_second_derivative((x, y) in integer_data()) {
+        let xq: Vec<Rational> = x.iter().map(|&v| exact::int(v)).collect();
+        let yq: Vec<Rational> = y.iter().map(|&v| exact::int(v)).collect();
+        let xf: Vec<f64> = x.iter().map(|&v| v as f64).collect();
+        let yf: Vec<f64> = y.iter().map(|&v| v as f64).collect();
+        for end in ends() {
+            let (a, r) = splinelab::moment_system(&xq, &yq, &end).unwrap();
+            let m = exact::solve(&a, &r).unwrap();
+            let spline = splinelab::CubicSpline::function(&xf, &yf, end).unwrap();
+            let scale = m.iter().map(|v| exact::to_f64(v).abs()).fold(1.0, f64::max);
+            for (i, &xi) in xf.iter().enumerate() {
+                // s″ at a node, from the piece on its right (the last node: its left)
+                let fast = spline.second_derivative(xi);
+                prop_assert!((fast - exact::to_f64(&m[(i, 0)])).abs() <= 1e-12 * scale,
+                    "{end:?} node {i}: {fast} vs {}", m[(i, 0)]);
+            }
+            let (af, rf) = splinelab::moment_system(&xf, &yf, &end).unwrap();
+            prop_assert_eq!(exact::from_f64_matrix(&af).unwrap(), a);
+            let rf_exact = exact::from_f64_matrix(&rf).unwrap();
+            for (p, q) in rf_exact.iter().zip(r.iter()) {
+                prop_assert!((exact::to_f64(p) - exact::to_f64(q)).abs() <= 1e-13 * (1.0 + exact::to_f64(q).abs()));
+            }
+        }
+    }
+
+    /// Cox–de Boor on exact rationals: each row of the triangle sums to exactly 1 inside the
+    /// domain, and every value is the `f64` recurrence's to rounding.
+    #[test]
+    fn cox_de_boor_in_fractions_is_a_partition_of_unity(
+        steps in proptest::collection::vec(0i64..=3, 4..10),
+        degree in 1usize..=3,
+        (p, d) in (0i64..=1000, 1i64..=1000),
+    ) {
+        let mut knots = vec![0.0];
+        for s in &steps {
+            knots.push(knots.last().unwrap() + *s as f64);
+        }
+        let Ok(kv) = splinelab::KnotVector::try_new(knots) else { return Ok(()) };
+        let Ok(basis) = splinelab::BSplineBasis::try_new(kv, degree) else { return Ok(()) };
+        let (a, b) = basis.domain();
+        if a >= b { return Ok(()); }
+        // t = a + (b − a) p/d, clamped to [a, b]
+        let t = exact::from_f64(a).unwrap() + exact::from_f64(b - a).unwrap() * q(p.min(d), d);
+        let table = basis.cox_de_boor_table(t.clone()).unwrap();
+        let row = table.row(degree);
+        let sum = row.iter().fold(Rational::zero(), |s, v| s + v.clone());
+        prop_assert_eq!(sum, Rational::one());
+        let tf = exact::to_f64(&t);
+        for i in 0..basis.len() {
+            let f = basis.cox_de_boor(i, degree, tf);
+            prop_assert!((f - exact::to_f64(&table[(degree, i)])).abs() <= 1e-12);
+        }
+    }
+
+    /// de Casteljau on exact points is the Bernstein sum exactly, and the recursive `castel`
+    /// reaches the same point with `2ⁿ⁻¹ − 1` calls.
+    #[test]
+    fn de_casteljau_in_fractions_is_the_bernstein_sum(
+        pts in proptest::collection::vec((-9i64..=9, -9i64..=9), 2..8),
+        (p, d) in (0i64..=50, 1i64..=50),
+    ) {
+        let points = exact::plane_points(&pts);
+        let u = q(p, d);
+        let levels = splinelab::de_casteljau_levels(&points, u.clone()).unwrap();
+        let n = points.len() - 1;
+        let b = exact::bernstein(n).unwrap();
+        let mut want = nalgebra::Vector2::new(Rational::zero(), Rational::zero());
+        for (bi, pi) in b.iter().zip(&points) {
+            let w = bi.eval(&u);
+            want += pi * w;
+        }
+        prop_assert_eq!(&levels[n][0], &want);
+        let (castel, calls) = splinelab::de_casteljau_recursive_counted(&points, u).unwrap();
+        prop_assert_eq!(castel, want);
+        prop_assert_eq!(calls, (1u64 << n) - 1);
+    }
+}

@@ -732,3 +732,44 @@ fn extreme_data_and_sizes_draw_or_are_refused_at_once() {
         started.elapsed()
     );
 }
+
+/// The animations are GIFs of their frames: as many frames as asked, of the frames' size,
+/// looping; de Casteljau's last frame has traced the whole curve, to the last control point.
+#[test]
+fn animations_are_gifs_of_their_frames() {
+    use image::AnimationDecoder;
+    use splinelab::report::animation;
+    let points = [
+        Vector2::new(0.0, 0.0),
+        Vector2::new(1.0, 3.0),
+        Vector2::new(4.0, 3.0),
+        Vector2::new(5.0, 0.0),
+    ];
+    let anim = animation::de_casteljau(&points, 6, "de Casteljau").unwrap();
+    assert_eq!(anim.frames().len(), 6);
+    let gif = anim.to_gif().unwrap();
+    let decoder = image::codecs::gif::GifDecoder::new(std::io::Cursor::new(&gif)).unwrap();
+    let frames = decoder.into_frames().collect_frames().unwrap();
+    assert_eq!(frames.len(), 6);
+    assert!(frames.iter().all(|f| f.buffer().dimensions() == (640, 500)));
+    // the frames differ: the construction moves with u
+    assert_ne!(frames[0].buffer().as_raw(), frames[5].buffer().as_raw());
+    // a later frame stores only what changed: what did not change (the legend, at the bottom)
+    // is still shown, as in the first frame, and is not blank
+    let bottom = |f: &image::Frame| {
+        let b = f.buffer();
+        (b.height() - 60..b.height())
+            .flat_map(|y| (0..b.width()).map(move |x| (x, y)))
+            .map(|(x, y)| b.get_pixel(x, y).0)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(bottom(&frames[0]), bottom(&frames[5]));
+    assert!(
+        bottom(&frames[5]).iter().any(|p| p[0] < 128),
+        "the legend is blank"
+    );
+    let window = splinelab::blending::window::WindowCurve::printed_bspline(&points).unwrap();
+    let slide = animation::sliding_window(&window, &points, 2, "window").unwrap();
+    assert_eq!(slide.frames().len(), 2 * window.segments() + 1);
+    eprintln!("GIF bytes: de Casteljau {} (6 frames)", gif.len());
+}

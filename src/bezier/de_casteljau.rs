@@ -2,9 +2,31 @@
 //! (seed 000 §4, Codice 11–12; seed 003).
 
 use crate::error::{Error, Result};
+use crate::exact::Rational;
 use crate::grid::Grid;
 use num_dual::DualNum;
+use num_traits::One;
 use std::ops::{Add, Mul};
+
+/// A curve parameter `u` de Casteljau's interpolation `(1 − u) Qᵢ + u Qᵢ₊₁` runs on: every
+/// dual number (`f64`, exact derivatives, formulas) and the exact [`Rational`] (the notes'
+/// construction in fractions).
+pub trait BezierParameter: Clone {
+    /// `1 − u`.
+    fn complement(&self) -> Self;
+}
+
+impl<D: DualNum<Primitive = f64> + Copy> BezierParameter for D {
+    fn complement(&self) -> Self {
+        -*self + 1.0
+    }
+}
+
+impl BezierParameter for Rational {
+    fn complement(&self) -> Self {
+        Rational::one() - self
+    }
+}
 
 /// [`Error::TooFewPoints`] unless there are at least `needed` points.
 fn at_least<P>(what: &'static str, points: &[P], needed: usize) -> Result<()> {
@@ -26,12 +48,12 @@ fn at_least<P>(what: &'static str, points: &[P], needed: usize) -> Result<()> {
 pub(crate) fn reduce<P, D>(points: &mut [P], u: D) -> P
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
-    D: DualNum<Primitive = f64> + Copy,
+    D: BezierParameter,
 {
-    let r = -u + 1.0;
+    let r = u.complement();
     for level in (1..points.len()).rev() {
         for i in 0..level {
-            points[i] = points[i].clone() * r + points[i + 1].clone() * u;
+            points[i] = points[i].clone() * r.clone() + points[i + 1].clone() * u.clone();
         }
     }
     points[0].clone()
@@ -54,7 +76,7 @@ where
 pub fn de_casteljau<P, D>(points: &[P], u: D) -> Result<P>
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
-    D: DualNum<Primitive = f64> + Copy,
+    D: BezierParameter,
 {
     at_least("de Casteljau control points", points, 1)?;
     Ok(reduce(&mut points.to_vec(), u))
@@ -83,18 +105,34 @@ where
 pub fn de_casteljau_recursive<P, D>(points: &[P], u: D) -> Result<P>
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
-    D: DualNum<Primitive = f64> + Copy,
+    D: BezierParameter,
 {
-    fn castel<P, D>(points: &[P], i: usize, level: usize, u: D) -> P
+    de_casteljau_recursive_counted(points, u).map(|(p, _)| p)
+}
+
+/// [`de_casteljau_recursive`] with the number of calls `castel` made, counted as it runs
+/// (each call one linear interpolation): `2ⁿ⁻¹ − 1` for `n` points, against the
+/// `n(n − 1)/2` interpolations of the triangle ([`de_casteljau_levels`]).
+///
+/// # Errors
+/// As [`de_casteljau_recursive`].
+pub fn de_casteljau_recursive_counted<P, D>(points: &[P], u: D) -> Result<(P, u64)>
+where
+    P: Clone + Add<Output = P> + Mul<D, Output = P>,
+    D: BezierParameter,
+{
+    fn castel<P, D>(points: &[P], i: usize, level: usize, u: &D, calls: &mut u64) -> P
     where
         P: Clone + Add<Output = P> + Mul<D, Output = P>,
-        D: DualNum<Primitive = f64> + Copy,
+        D: BezierParameter,
     {
-        let r = -u + 1.0;
+        *calls += 1;
+        let r = u.complement();
         if level == 1 {
-            points[i].clone() * r + points[i + 1].clone() * u
+            points[i].clone() * r + points[i + 1].clone() * u.clone()
         } else {
-            castel(points, i, level - 1, u) * r + castel(points, i + 1, level - 1, u) * u
+            castel(points, i, level - 1, u, calls) * r
+                + castel(points, i + 1, level - 1, u, calls) * u.clone()
         }
     }
     at_least("recursive de Casteljau control points", points, 2)?;
@@ -105,7 +143,9 @@ where
             max: MAX_RECURSIVE_POINTS,
         });
     }
-    Ok(castel(points, 0, points.len() - 1, u))
+    let mut calls = 0;
+    let p = castel(points, 0, points.len() - 1, &u, &mut calls);
+    Ok((p, calls))
 }
 
 /// The most control points [`de_casteljau_recursive`] accepts: `2²³ ≈ 8 · 10⁶` calls, a
@@ -123,17 +163,17 @@ pub const MAX_RECURSIVE_POINTS: usize = 24;
 pub fn de_casteljau_levels<P, D>(points: &[P], u: D) -> Result<Vec<Vec<P>>>
 where
     P: Clone + Add<Output = P> + Mul<D, Output = P>,
-    D: DualNum<Primitive = f64> + Copy,
+    D: BezierParameter,
 {
     at_least("de Casteljau control points", points, 1)?;
     let n = points.len();
     crate::error::size_product("de Casteljau triangle points", n, n.div_ceil(2) + 1)?;
-    let r = -u + 1.0;
+    let r = u.complement();
     let mut levels = vec![points.to_vec()];
     while let Some(last) = levels.last().filter(|l| l.len() > 1) {
         let next = last
             .windows(2)
-            .map(|w| w[0].clone() * r + w[1].clone() * u)
+            .map(|w| w[0].clone() * r.clone() + w[1].clone() * u.clone())
             .collect();
         levels.push(next);
     }

@@ -74,6 +74,18 @@ impl<const N: usize> WindowCurve<N> {
         self.segments
     }
 
+    /// The four window points segment `k` blends (`k` clamped to the segments): `Q_k … Q_{k+3}`
+    /// for the printed B-spline; for the Lagrange curve the window of the data segment `k`
+    /// (the first and last data segments use the first and last full window).
+    pub fn window_of(&self, k: usize) -> &[SVector<f64, N>] {
+        let k = k.min(self.segments.saturating_sub(1));
+        let w = match self.blending {
+            Blending::UniformBSpline => k,
+            Blending::Lagrange => k.saturating_sub(1).min(self.window_points.len() - 4),
+        };
+        &self.window_points[w..w + 4]
+    }
+
     /// `Σᵢ Q_{k+i} bᵢ(u)` for window `k`, any `u` and number type.
     fn window<D: DualNum<Primitive = f64> + Copy>(&self, k: usize, u: D) -> SVector<D, N> {
         self.blending

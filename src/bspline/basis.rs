@@ -7,7 +7,10 @@ use crate::lanes::Lanes;
 use nalgebra::SVector;
 use num_dual::DualNum;
 use num_traits::{One, Zero};
+use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
+
+pub use super::scalar::KnotScalar;
 
 /// `$body` with `$l` a constant `p + 1` (the count of non-zero basis values) for degrees
 /// `p = 0 … 7`, so that arrays and loops of that length are sized and unrolled at compile
@@ -551,9 +554,55 @@ impl BSplineBasis {
     /// digits where knots nearly coincide (see [`BSplineBasis::nonzero_into`]); it is a
     /// reference for values.
     ///
+    /// It is written once, over [`KnotScalar`]: `f64` and every dual number (values and exact
+    /// derivatives, formulas under a symbolic trace) and the exact [`crate::exact::Rational`]
+    /// (the slides' fractions: `N_{1,2}(3/5) = 33/50`).
+    ///
     /// # Panics
     /// If `i + q + 1` exceeds the last knot index.
-    pub fn cox_de_boor<D: DualNum<Primitive = f64> + Copy>(&self, i: usize, q: usize, t: D) -> D {
+    pub fn cox_de_boor<T: KnotScalar>(&self, i: usize, q: usize, t: T) -> T {
+        let mut levels = self.cox_de_boor_levels(i, q, t);
+        levels
+            .pop()
+            .map_or_else(T::zero, |mut last| last.swap_remove(0))
+    }
+
+    /// The whole Cox–de Boor triangle at `t`, as the slides build it by hand: row `d`
+    /// (`0 … p`) holds `N_{0,d}(t), N_{1,d}(t), …`, every function of degree `d` on these knots
+    /// (`m − 1 − d` of them for `m` knots), padded with zeros to the width of row 0. Row `p` is
+    /// the basis; each row sums to one on the domain. From [`BSplineBasis::cox_de_boor_levels`].
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above 256 knots (the triangle is written out whole);
+    /// [`Error::NonFinite`] for a NaN or infinite `t`.
+    pub fn cox_de_boor_table<T: KnotScalar + nalgebra::Scalar>(
+        &self,
+        t: T,
+    ) -> Result<nalgebra::DMatrix<T>> {
+        const MAX_KNOTS: usize = 256;
+        crate::error::finite("Cox–de Boor table parameter t", t.value())?;
+        let m = self.knots.knots().len();
+        if m > MAX_KNOTS {
+            return Err(Error::TooLarge {
+                what: "knots of a Cox–de Boor table",
+                got: m,
+                max: MAX_KNOTS,
+            });
+        }
+        let p = self.degree;
+        let levels = self.cox_de_boor_levels(0, m - 2, t);
+        Ok(nalgebra::DMatrix::from_fn(p + 1, m - 1, |d, i| {
+            levels[d].get(i).cloned().unwrap_or_else(T::zero)
+        }))
+    }
+
+    /// Every step of [`BSplineBasis::cox_de_boor`] for `N_{i,q}(t)`: row `d` (`0 … q`) holds
+    /// `N_{i,d}(t), …, N_{i+q−d,d}(t)`, the functions of degree `d` that `N_{i,q}` is built
+    /// from; the last row is `[N_{i,q}(t)]`.
+    ///
+    /// # Panics
+    /// If `i + q + 1` exceeds the last knot index.
+    pub fn cox_de_boor_levels<T: KnotScalar>(&self, i: usize, q: usize, t: T) -> Vec<Vec<T>> {
         let k = self.knots.knots();
         let last = i.checked_add(q).and_then(|s| s.checked_add(1));
         assert!(
@@ -563,43 +612,44 @@ impl BSplineBasis {
         );
         let b = self.domain().1;
         let end_span = self.find_span(b);
-        // the level-0 functions are picked by the knot span of t: the formula holds there
-        let x = crate::branch::choose(&t, |x| (x, self.span_condition(self.find_span(x), x)));
-        // level 0: N_{i+j,0}, j = 0 … q. At the right end b exactly, the last non-empty span
-        // is closed on the right and no other N_{·,0} is 1 (for a clamped end the half-open
-        // rule would give all zeros; where b is repeated, an empty span).
-        let mut level: Vec<D> = (i..=i + q)
-            .map(|m| {
-                let one = if x == b {
-                    m == end_span
-                } else {
-                    k[m] <= x && x < k[m + 1]
-                };
-                if one {
-                    D::one()
-                } else {
-                    D::zero()
+        // level 0: N_{m,0} = 1 for the one m with t_m ≤ t < t_{m+1}; at the right end b
+        // exactly, the last non-empty span is closed on the right and no other N_{·,0} is 1
+        // (for a clamped end the half-open rule would give all zeros; where b is repeated, an
+        // empty span). The knot span of t is picked here: the formula holds there.
+        let one: Option<usize> = t.locate(
+            |order| {
+                if order(b) == Ordering::Equal {
+                    return Some(end_span);
                 }
-            })
+                (i..=i + q).find(|&m| order(k[m]).is_ge() && order(k[m + 1]).is_lt())
+            },
+            |x| self.span_condition(self.find_span(x), x),
+        );
+        let mut level: Vec<T> = (i..=i + q)
+            .map(|m| if one == Some(m) { T::one() } else { T::zero() })
             .collect();
+        let mut levels = Vec::with_capacity(q + 1);
         for d in 1..=q {
+            levels.push(level.clone());
             // N_{m,d} for m = i … i + q − d from N_{m,d−1} and N_{m+1,d−1}
             for j in 0..=q - d {
                 let m = i + j;
-                let mut value = D::zero();
+                let mut value = T::zero();
                 // N / d first: where N = 0 the product is 0 even if (t − tₘ)/d would overflow
                 let d1 = k[m + d] - k[m];
                 if d1 > 0.0 {
-                    value += (t - k[m]) * (level[j] / d1);
+                    value += t.minus_knot(k[m]) * level[j].over(d1);
                 }
                 let d2 = k[m + d + 1] - k[m + 1];
                 if d2 > 0.0 {
-                    value += (-t + k[m + d + 1]) * (level[j + 1] / d2);
+                    value += t.knot_minus(k[m + d + 1]) * level[j + 1].over(d2);
                 }
                 level[j] = value;
             }
+            level.truncate(q - d + 1);
         }
-        level[0]
+        levels.push(level);
+        levels
     }
 }
 

@@ -5,3 +5,4 @@ pub(crate) mod basis;
 pub(crate) mod curve;
 pub(crate) mod fit;
 pub(crate) mod knots;
+pub(crate) mod scalar;

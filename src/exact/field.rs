@@ -30,6 +30,18 @@ pub trait Field:
 
     /// Whether the number is finite (always, for exact numbers).
     fn is_finite(&self) -> bool;
+
+    /// Whether the number is greater than zero.
+    fn is_positive(&self) -> bool;
+
+    /// The nearest `f64` (for messages and comparisons with rounded results).
+    fn to_f64(&self) -> f64;
+
+    /// The value of a finite `f64` in this field (exact for [`Rational`]).
+    ///
+    /// # Errors
+    /// [`crate::Error::NonFinite`] for NaN or an infinity.
+    fn from_f64(x: f64) -> crate::error::Result<Self>;
 }
 
 impl Field for f64 {
@@ -45,6 +57,18 @@ impl Field for f64 {
     fn is_finite(&self) -> bool {
         f64::is_finite(*self)
     }
+
+    fn is_positive(&self) -> bool {
+        *self > 0.0
+    }
+
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+
+    fn from_f64(x: f64) -> crate::error::Result<Self> {
+        crate::error::finite("f64 value", x)
+    }
 }
 
 impl Field for Rational {
@@ -59,6 +83,18 @@ impl Field for Rational {
 
     fn is_finite(&self) -> bool {
         true
+    }
+
+    fn is_positive(&self) -> bool {
+        *self > Rational::zero()
+    }
+
+    fn to_f64(&self) -> f64 {
+        Rational::to_f64(self)
+    }
+
+    fn from_f64(x: f64) -> crate::error::Result<Self> {
+        Rational::from_f64(x)
     }
 }
 

@@ -72,6 +72,14 @@ pub fn from_f64(x: f64) -> Result<Rational> {
     Rational::from_f64(x)
 }
 
+/// Plane points with integer coordinates, exact: `exact::plane_points(&[(0, 0), (1, 3)])`.
+pub fn plane_points(pairs: &[(i64, i64)]) -> Vec<nalgebra::Vector2<Rational>> {
+    pairs
+        .iter()
+        .map(|&(x, y)| nalgebra::Vector2::new(int(x), int(y)))
+        .collect()
+}
+
 /// The nearest `f64` to `q` (`±∞` when `q` is beyond `f64`'s range).
 pub fn to_f64(q: &Rational) -> f64 {
     q.to_f64()
@@ -145,13 +153,25 @@ pub fn conditions_on(
     functions: &[Polynomial<Rational>],
     conditions: &[(usize, i64)],
 ) -> Result<DMatrix<Rational>> {
+    let at: Vec<(usize, Rational)> = conditions.iter().map(|&(d, x)| (d, int(x))).collect();
+    conditions_on_at(functions, &at)
+}
+
+/// [`conditions_on`] at any rational points: `(d, x)` is the `d`-th derivative at `x`
+/// (`exact::conditions_on_at(&h, &[(1, exact::ratio(1, 2)?)])` is `H′(1/2)`).
+///
+/// # Errors
+/// [`Error::TooLarge`] if there are more than [`MAX_DIMENSION`] functions or conditions.
+pub fn conditions_on_at(
+    functions: &[Polynomial<Rational>],
+    conditions: &[(usize, Rational)],
+) -> Result<DMatrix<Rational>> {
     check_dimension("exact::conditions_on functions", functions.len())?;
     check_dimension("exact::conditions_on conditions", conditions.len())?;
     let mut k = DMatrix::from_element(conditions.len(), functions.len(), Rational::zero());
-    for (row, &(d, x)) in conditions.iter().enumerate() {
-        let x = int(x);
+    for (row, (d, x)) in conditions.iter().enumerate() {
         for (j, f) in functions.iter().enumerate() {
-            k[(row, j)] = f.derivative_n(d).eval(&x);
+            k[(row, j)] = f.derivative_n(*d).eval(x);
         }
     }
     Ok(k)

@@ -86,6 +86,26 @@ impl Written for DMatrix<Rational> {
     }
 }
 
+impl<const N: usize> Written for nalgebra::SVector<Rational, N> {
+    fn plain(&self) -> String {
+        let parts: Vec<String> = self.iter().map(Written::plain).collect();
+        format!("({})", parts.join(", "))
+    }
+
+    fn latex(&self) -> String {
+        let parts: Vec<String> = self.iter().map(Written::latex).collect();
+        format!("\\left({}\\right)", parts.join(",\\ "))
+    }
+
+    fn mathml(&self) -> String {
+        let parts: Vec<String> = self.iter().map(Written::mathml).collect();
+        format!(
+            "<mrow><mo>(</mo>{}<mo>)</mo></mrow>",
+            parts.join("<mo>,</mo>")
+        )
+    }
+}
+
 impl Polynomial<Rational> {
     /// The polynomial in plain text, ascending powers (`1 - 3*s^2 + 2*s^3`).
     pub fn plain(&self, var: &str) -> String {

@@ -9,6 +9,7 @@ pub mod collocation;
 pub(crate) mod cubic;
 pub(crate) mod linear;
 pub(crate) mod methods;
+pub(crate) mod moments;
 pub(crate) mod polynomial;
 
 pub use angular::{classify, COLLINEAR_SIN};

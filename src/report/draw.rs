@@ -759,6 +759,48 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
         .figure()
 }
 
+/// One panel of de Casteljau's construction at `u`: the control polygon, the curve (`curve`,
+/// sampled), every level of interpolation down to `P(u)`; with `traced`, the curve drawn
+/// dashed and the part traced so far solid (a frame of an animation).
+pub(crate) fn de_casteljau_panel(
+    points: &[Vector2<f64>],
+    curve: &[(f64, f64)],
+    u: f64,
+    traced: Option<Vec<(f64, f64)>>,
+) -> Result<Panel> {
+    let levels = crate::bezier::de_casteljau::de_casteljau_levels(points, u)?;
+    let mut panel = Panel::new(format!("u = {u}"), "x", "y")
+        .equal()
+        .legend_at(plotters::prelude::SeriesLabelPosition::LowerMiddle)
+        .with(Series::polygon("control points", points));
+    panel = match traced {
+        None => panel.with(Series::line("Bézier curve", curve.to_vec(), LINE_PALETTE[0]).width(3)),
+        Some(part) => panel
+            .with(
+                Series::line("Bézier curve", curve.to_vec(), crate::report::plot2d::GREY)
+                    .styled(Style::Dashed)
+                    .width(1),
+            )
+            .with(Series::line("traced so far", part, LINE_PALETTE[0]).width(3)),
+    };
+    for (level, pts) in levels.iter().enumerate().skip(1) {
+        let style = if pts.len() == 1 {
+            Style::Points(7)
+        } else {
+            Style::LinePoints(4)
+        };
+        let label = if pts.len() == 1 {
+            format!("P(u), level {level}")
+        } else {
+            format!("level {level}")
+        };
+        panel = panel.with(
+            Series::line(label, xy(pts), LINE_PALETTE[level % LINE_PALETTE.len()]).styled(style),
+        );
+    }
+    Ok(panel)
+}
+
 /// de Casteljau's construction for any control points, one panel per parameter `u` (at most
 /// six): the control polygon, the curve, and every level of repeated linear interpolation
 /// down to the point `P(u)`.
@@ -766,6 +808,7 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
 /// # Errors
 /// As [`crate::bezier::de_casteljau::de_casteljau`] (no points, non-finite coordinates).
 pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<Figure> {
+    crate::error::finite_points("de Casteljau control points", points)?;
     let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
         .into_iter()
         .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
@@ -793,32 +836,11 @@ pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<
         .filter(|&(r, c)| r * c >= n)
         .max_by(|&a, &b| scale(a).total_cmp(&scale(b)))
         .unwrap_or((1, n));
-    let mut panels = Vec::new();
-    for &u in us.iter().take(6) {
-        let levels = crate::bezier::de_casteljau::de_casteljau_levels(points, u)?;
-        let mut panel = Panel::new(format!("u = {u}"), "x", "y")
-            .equal()
-            .legend_at(plotters::prelude::SeriesLabelPosition::LowerMiddle)
-            .with(Series::polygon("control points", points))
-            .with(Series::line("Bézier curve", curve.clone(), LINE_PALETTE[0]).width(3));
-        for (level, pts) in levels.iter().enumerate().skip(1) {
-            let style = if pts.len() == 1 {
-                Style::Points(7)
-            } else {
-                Style::LinePoints(4)
-            };
-            let label = if pts.len() == 1 {
-                format!("P(u), level {level}")
-            } else {
-                format!("level {level}")
-            };
-            panel = panel.with(
-                Series::line(label, xy(pts), LINE_PALETTE[level % LINE_PALETTE.len()])
-                    .styled(style),
-            );
-        }
-        panels.push(panel);
-    }
+    let panels = us
+        .iter()
+        .take(6)
+        .map(|&u| de_casteljau_panel(points, &curve, u, None))
+        .collect::<Result<Vec<_>>>()?;
     Ok(Figure::from(
         Figure2d::new(title, panels, layout).shared_legend(),
     ))

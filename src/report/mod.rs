@@ -5,6 +5,8 @@
 //!   outlines, corner points, derivative arrows, control nets), curves in the plane and in
 //!   space with control polygons and tangents, bases, error maps and convergence plots for
 //!   any surface and partition, line and log plots of any series. Each returns a [`Figure`].
+//! - [`animation`]: processes in time — de Casteljau's construction as `u` runs, a blending
+//!   window sliding along the data — as looping GIFs shown inline in a notebook.
 //! - [`table`](mod@table): a [`Table`] (a [`frame::Frame`], title, notes) from any tabulation, error
 //!   study or convergence study; Markdown, HTML and CSV for any frame (and, with the
 //!   `polars` feature, for any polars DataFrame through `Frame::try_from`).
@@ -26,6 +28,7 @@
 //!
 //! It depends on the mathematics; the mathematics never depends on it.
 
+pub mod animation;
 pub mod bench;
 pub mod draw;
 pub mod error;
@@ -50,6 +53,7 @@ mod supersample;
 pub mod table;
 pub mod user;
 
+pub use animation::Animation;
 pub use error::{Error, Result};
 pub use figure::Figure;
 pub use files::remove_temporaries_on_interrupt;

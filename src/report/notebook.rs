@@ -186,6 +186,22 @@ pub fn partials(p: &Partials) -> Html {
     )
 }
 
+/// The one call of a notebook's setup cell, after its `:dep` line: draws a small figure with
+/// text in memory, so that a missing font or a broken backend shows here, by name, and not in
+/// the first figure. Called with `?`, it also settles how the kernel shows the session's later
+/// results (evcxr shows the value of the first cell that uses `?` as `Debug` text; after this
+/// call, figures, tables and formulas display as themselves).
+///
+/// # Errors
+/// The error of drawing or encoding the test figure.
+pub fn setup() -> crate::report::Result<()> {
+    let figure = crate::report::draw::Plot2d::new("setup", "x", "y")
+        .function("x", 0.0, 1.0, |x| x)
+        .figure()
+        .with_size(120, 90);
+    figure.to_png().map(|_| ())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

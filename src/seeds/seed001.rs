@@ -159,7 +159,15 @@ impl RungeRow {
 /// # Errors
 /// Never in practice; errors of the interpolation.
 pub fn runge_rows() -> Result<Vec<RungeRow>> {
-    RUNGE_DEGREES
+    runge_rows_for(&RUNGE_DEGREES)
+}
+
+/// The Runge study over any degrees.
+///
+/// # Errors
+/// The errors of the interpolation (a degree beyond the interpolants' limit).
+pub fn runge_rows_for(degrees: &[usize]) -> Result<Vec<RungeRow>> {
+    degrees
         .iter()
         .map(|&degree| {
             let err = |family| {

@@ -415,6 +415,19 @@ impl MathTable {
             })
     }
 
+    /// A triangle of exact values, level by level, one row each: entry `i` of level `r` named
+    /// `name_i^r` (`MathTable::levels("P", &de_casteljau_levels(&points, u)?)`: the control
+    /// points `P_i^0`, then each level of interpolation down to `P_0^n`, the curve point).
+    pub fn levels<W: Written>(name: &str, levels: &[Vec<W>]) -> MathTable {
+        let mut table = MathTable::new();
+        for (r, level) in levels.iter().enumerate() {
+            for (i, value) in level.iter().enumerate() {
+                table = table.eq(&format!("{name}_{{{i}}}^{{{r}}}"), value);
+            }
+        }
+        table
+    }
+
     /// The table with one more note under it (plain text).
     pub fn note(mut self, text: &str) -> MathTable {
         self.notes.push(text.to_string());

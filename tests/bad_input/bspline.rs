@@ -649,5 +649,25 @@ fn evaluation_cases() -> Vec<Case> {
             );
             Ok(())
         }),
+        case("bspline::cox_de_boor_table_size", || {
+            let basis = ok(BSplineBasis::try_new(
+                ok(KnotVector::open_uniform(3, 300, 0.0, 1.0))?,
+                3,
+            ))?;
+            expect_err!(basis.cox_de_boor_table(0.5), Error::TooLarge { .. })?;
+            let small = ok(BSplineBasis::try_new(
+                ok(KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0]))?,
+                2,
+            ))?;
+            for t in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                expect_err!(small.cox_de_boor_table(t), Error::NonFinite { .. })?;
+            }
+            // beyond the knots: a table of zeros
+            for t in [-5.0, 7.0] {
+                let table = ok(small.cox_de_boor_table(t))?;
+                ensure!(table.iter().all(|v| *v == 0.0), "t = {t}: {table}");
+            }
+            Ok(())
+        }),
     ]
 }

@@ -1472,5 +1472,62 @@ fn curve_cases() -> Vec<Case> {
                 Ok(())
             })
         }),
+        case("interp::moment_system_bad_data", || {
+            use splinelab::exact::{self, Rational};
+            let natural = EndCondition::Natural;
+            expect_err!(
+                splinelab::moment_system(&[0.0, 1.0, 2.0], &[0.0, 1.0], &natural),
+                Error::CountMismatch { .. }
+            )?;
+            expect_err!(
+                splinelab::moment_system(&[0.0], &[0.0], &natural),
+                Error::TooFewPoints { needed: 2, .. }
+            )?;
+            expect_err!(
+                splinelab::moment_system(&[0.0, 1.0], &[0.0, 1.0], &EndCondition::Cyclic),
+                Error::TooFewPoints { needed: 3, .. }
+            )?;
+            expect_err!(
+                splinelab::moment_system(&[0.0, 1.0, 1.0], &[0.0, 1.0, 2.0], &natural),
+                Error::NotIncreasing { index: 2, .. }
+            )?;
+            expect_err!(
+                splinelab::moment_system(&[0.0, 2.0, 1.0], &[0.0, 1.0, 2.0], &natural),
+                Error::NotIncreasing { index: 2, .. }
+            )?;
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                expect_err!(
+                    splinelab::moment_system(&[0.0, 1.0, 2.0], &[0.0, bad, 2.0], &natural),
+                    Error::NonFinite { .. }
+                )?;
+                expect_err!(
+                    splinelab::moment_system(
+                        &[0.0, 1.0, 2.0],
+                        &[0.0, 1.0, 2.0],
+                        &EndCondition::clamped(bad, 0.0)
+                    ),
+                    Error::NonFinite { .. }
+                )?;
+            }
+            let many: Vec<Rational> = (0..300).map(exact::int).collect();
+            expect_err!(
+                splinelab::moment_system(&many, &many, &natural),
+                Error::TooLarge { .. }
+            )?;
+            // finite nodes whose derived coefficients overflow: 2(h₀ + h₁) = 4·f64::MAX
+            expect_err!(
+                splinelab::moment_system(&[-f64::MAX, 0.0, f64::MAX], &[0.0, 1.0, 0.0], &natural),
+                Error::Overflow { .. }
+            )?;
+            expect_err!(
+                splinelab::moment_system(
+                    &[-f64::MAX, f64::MAX],
+                    &[0.0, 1.0],
+                    &EndCondition::clamped(0.0, 0.0)
+                ),
+                Error::Overflow { .. }
+            )?;
+            Ok(())
+        }),
     ]
 }

@@ -584,5 +584,102 @@ fn study_table_cases() -> Vec<Case> {
                 RError::Core(Error::TooLarge { .. })
             )
         }),
+        case("report::seed_figures_with_nothing_to_draw", || {
+            use splinelab::report::{seed001, seed003, seed004};
+            expect_err!(seed004::figures::angular_pieces(&[]), RError::Figure { .. })?;
+            expect_err!(
+                seed004::figures::cardinal_a(&Shape::Circle, 4, &[]),
+                RError::Figure { .. }
+            )?;
+            expect_err!(
+                seed004::figures::cardinal_a(&Shape::Sinusoid { periods: 1.0 }, 4, &[0.5]),
+                RError::Core(Error::Degenerate { .. })
+            )?;
+            expect_err!(
+                seed004::figures::cardinal_a(&Shape::Circle, 0, &[0.5]),
+                RError::Core(_)
+            )?;
+            expect_err!(
+                seed004::figures::shape_methods(&Shape::Circle, &[]),
+                RError::Figure { .. }
+            )?;
+            expect_err!(
+                seed004::figures::sicily_decimated(7, &[]),
+                RError::Figure { .. }
+            )?;
+            expect_err!(seed004::figures::bezier(&[]), RError::Core(_))?;
+            expect_err!(seed001::figures::bspline_bases(&[]), RError::Figure { .. })?;
+            expect_err!(seed001::figures::nurbs_circles(&[]), RError::Figure { .. })?;
+            expect_err!(seed001::figures::parametrizations(&[]), RError::Core(_))?;
+            expect_err!(
+                seed001::figures::cubic_spline_ends("f", |x| x, &[], &[EndCondition::Natural]),
+                RError::Core(_)
+            )?;
+            expect_err!(seed003::figures::four_way(&[], 5), RError::Figure { .. })?;
+            expect_err!(seed003::figures::blending_curves(&[]), RError::Core(_))?;
+            let curve = ok(seed001_locality())?;
+            expect_err!(
+                seed001::figures::bspline_locality(&curve, 99, Vector2::new(0.0, 0.0)),
+                RError::Core(_)
+            )?;
+            expect_err!(
+                seed001::figures::bspline_locality(&curve, 1, Vector2::new(f64::NAN, 0.0)),
+                RError::Core(_)
+            )?;
+            Ok(())
+        }),
+        case("report::animations_bad_sizes", || {
+            use splinelab::report::animation::{self, Animation, MAX_FRAMES};
+            let pts = [
+                Vector2::new(0.0, 0.0),
+                Vector2::new(1.0, 1.0),
+                Vector2::new(2.0, 0.0),
+            ];
+            for frames in [0, 1, MAX_FRAMES + 1, usize::MAX] {
+                expect_err!(
+                    animation::de_casteljau(&pts, frames, "a"),
+                    RError::Figure { .. }
+                )?;
+            }
+            expect_err!(animation::de_casteljau(&[], 5, "a"), RError::Core(_))?;
+            expect_err!(
+                animation::de_casteljau(
+                    &[Vector2::new(f64::NAN, 0.0), Vector2::new(1.0, 0.0)],
+                    5,
+                    "a"
+                ),
+                RError::Core(_)
+            )?;
+            let window = ok(splinelab::blending::window::WindowCurve::printed_bspline(
+                &pts,
+            ))?;
+            for steps in [0, 25, usize::MAX] {
+                expect_err!(
+                    animation::sliding_window(&window, &pts, steps, "w"),
+                    RError::Figure { .. }
+                )?;
+            }
+            expect_err!(Animation::try_new(Vec::new(), 100), RError::Figure { .. })?;
+            let frame = || {
+                Plot2d::new("f", "x", "y")
+                    .function("x", 0.0, 1.0, |x| x)
+                    .figure()
+            };
+            for delay in [0, 19, 10_001, u32::MAX] {
+                expect_err!(
+                    Animation::try_new(vec![frame()], delay),
+                    RError::Figure { .. }
+                )?;
+            }
+            expect_err!(
+                Animation::try_new(vec![frame(), frame().with_size(100, 100)], 100),
+                RError::Figure { .. }
+            )?;
+            Ok(())
+        }),
     ]
+}
+
+fn seed001_locality() -> Result<BSplineCurve<2>, Error> {
+    splinelab::seeds::seed001::locality_curve()
 }

@@ -15,9 +15,8 @@ use crate::report::figure::Figure;
 use crate::report::render3d::View;
 use crate::report::style::{codice14_color, CODICE14_COLORS, FACE_ALPHA, PATCH_PALETTE};
 use crate::study::hermite_error::REPORT_PREC;
-use crate::surface::Torus;
+use crate::surface::{ParametricSurface, Torus};
 use plotters::style::RGBColor;
-use std::f64::consts::TAU;
 
 /// The portion of the torus used for the single-patch figures: `[0, 1]²`, the domain of the
 /// report's §3 (whose Figs 3–5 do not print their bounds).
@@ -32,15 +31,15 @@ pub const PATCH_VIEW: View = View {
     scale: 1.0,
 };
 
-/// Fig 1: a patch with non-zero twist at every corner, its corner points and the vectors
-/// `X_s`, `X_t`, `X_st` there (Δ-scaled and divided by 3, so the first two end at the Bézier
-/// control points).
+/// Fig 1: the Hermite patch of `surface` on `rect`, its corner points and the vectors `X_s`,
+/// `X_t`, `X_st` there (Δ-scaled and divided by 3, so the first two end at the Bézier control
+/// points). The seed's: the torus on `[0, 1.2] × [0.5, 1.6]`, a patch with non-zero twist at
+/// every corner.
 ///
 /// # Errors
-/// Never in practice (the data are fixed and valid).
-pub fn fig1() -> Result<Figure> {
-    let rect = Rect::new(0.0, 1.2, 0.5, 1.6);
-    let patch = HermitePatch::try_from_surface(&Torus::default(), &rect)?;
+/// The errors of [`HermitePatch::try_from_surface`] (a surface not finite at a corner).
+pub fn fig1<S: ParametricSurface + ?Sized>(surface: &S, rect: &Rect) -> Result<Figure> {
+    let patch = HermitePatch::try_from_surface(surface, rect)?;
     let local = Rect::unit();
     Ok(
         Plot3d::new("Fig 1 — corner points and derivatives of a Hermite patch")
@@ -56,21 +55,36 @@ pub fn fig1() -> Result<Figure> {
     )
 }
 
-/// Figs 2 and 3: the torus, `s, t ∈ [0, 7]` on a 50 × 50 grid (Codice 1); with `corners`,
-/// the four corners of the portion `[0, 1]²` in red (Codice 2).
+/// Figs 2 and 3: `surface` on `domain` on an `n × n` grid (Codice 1: the torus,
+/// `s, t ∈ [0, 7]`, 50 × 50); with `corners` of a portion, its four corners in red (Codice 2:
+/// the portion `[0, 1]²`).
 ///
 /// # Errors
-/// Never in practice.
-pub fn torus_figure(corners: bool) -> Result<Figure> {
-    let torus = Torus::default();
-    let title = if corners {
-        "Fig 3 — corners of the portion [0,1]² of the torus"
-    } else {
-        "Fig 2 — test surface: torus, s, t ∈ [0, 7], 50×50"
+/// Fewer than 2 samples; a surface not finite on the grid.
+pub fn torus_figure<S: ParametricSurface + ?Sized>(
+    surface: &S,
+    domain: &Rect,
+    n: usize,
+    corners: Option<&Rect>,
+) -> Result<Figure> {
+    let title = match corners {
+        Some(r) => format!(
+            "Fig 3 — corners of the portion [{}, {}] × [{}, {}]",
+            r.s.start(),
+            r.s.end(),
+            r.t.start(),
+            r.t.end()
+        ),
+        None => format!(
+            "Fig 2 — the surface, s ∈ [{}, {}], t ∈ [{}, {}], {n}×{n}",
+            domain.s.start(),
+            domain.s.end(),
+            domain.t.start(),
+            domain.t.end()
+        ),
     };
-    let plot = Plot3d::new(title).surface(&torus, &Rect::new(0.0, 7.0, 0.0, 7.0), 50)?;
-    Ok(if corners {
-        let r = portion();
+    let plot = Plot3d::new(title).surface(surface, domain, n)?;
+    Ok(if let Some(r) = corners {
         let points: Vec<_> = [
             (r.s.start(), r.t.start()),
             (r.s.start(), r.t.end()),
@@ -78,9 +92,13 @@ pub fn torus_figure(corners: bool) -> Result<Figure> {
             (r.s.end(), r.t.start()),
         ]
         .iter()
-        .map(|&(s, t)| crate::surface::SurfaceDerivatives::point(&torus, s, t))
+        .map(|&(s, t)| crate::surface::SurfaceDerivatives::point(surface, s, t))
         .collect();
-        plot.points(&points, RGBColor(220, 0, 0), "corners of [0,1]² (Codice 2)")
+        plot.points(
+            &points,
+            RGBColor(220, 0, 0),
+            "corners of the portion (Codice 2)",
+        )
     } else {
         plot
     }
@@ -92,7 +110,7 @@ pub fn torus_figure(corners: bool) -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn fig2() -> Result<Figure> {
-    torus_figure(false)
+    torus_figure(&Torus::default(), &Rect::new(0.0, 7.0, 0.0, 7.0), 50, None)
 }
 
 /// Fig 3.
@@ -100,32 +118,36 @@ pub fn fig2() -> Result<Figure> {
 /// # Errors
 /// Never in practice.
 pub fn fig3() -> Result<Figure> {
-    torus_figure(true)
+    torus_figure(
+        &Torus::default(),
+        &Rect::new(0.0, 7.0, 0.0, 7.0),
+        50,
+        Some(&portion()),
+    )
 }
 
-/// Fig 4: the bicubic Hermite patch of the portion (Codice 5).
+/// Fig 4: the bicubic Hermite patch of `surface` on `rect` (Codice 5: the torus on the portion
+/// `[0, 1]²`), tabulated on `n × n` points.
 ///
 /// # Errors
-/// Never in practice.
-pub fn fig4() -> Result<Figure> {
-    let patch = HermitePatch::try_from_surface(&Torus::default(), &portion())?;
+/// A surface not finite at a corner; fewer than 2 samples.
+pub fn fig4<S: ParametricSurface + ?Sized>(surface: &S, rect: &Rect, n: usize) -> Result<Figure> {
+    let patch = HermitePatch::try_from_surface(surface, rect)?;
     Ok(
-        Plot3d::new("Fig 4 — bicubic Hermite patch H(s)ᵀ C H(t) of the portion [0,1]²")
+        Plot3d::new("Fig 4 — bicubic Hermite patch H(s)ᵀ C H(t) of the portion")
             .view(PATCH_VIEW)
-            .surface(&patch, &Rect::unit(), 30)?
+            .surface(&patch, &Rect::unit(), n)?
             .figure(),
     )
 }
 
-/// Fig 5: the de Casteljau surface with its 16 control points and net (Codice 9, 11).
+/// Fig 5: the de Casteljau surface of the patch of `surface` on `rect` with its 16 control
+/// points and net (Codice 9, 11: the torus on the portion `[0, 1]²`).
 ///
 /// # Errors
-/// Never in practice.
-pub fn fig5() -> Result<Figure> {
-    let bezier = BezierPatch::from_hermite(&HermitePatch::try_from_surface(
-        &Torus::default(),
-        &portion(),
-    )?);
+/// A surface not finite at a corner.
+pub fn fig5<S: ParametricSurface + ?Sized>(surface: &S, rect: &Rect) -> Result<Figure> {
+    let bezier = BezierPatch::from_hermite(&HermitePatch::try_from_surface(surface, rect)?);
     let net = bezier.net();
     let net = Grid::from_fn(4, 4, |i, j| net[i][j]);
     Ok(
@@ -166,36 +188,42 @@ pub fn fig6() -> Result<Figure> {
     )
 }
 
-/// Fig 7: the whole torus as 4 × 4 = 16 Hermite patches.
+/// Fig 7: a spline surface patch by patch, opaque, `samples` per patch side (the seed's: the
+/// whole torus as 4 × 4 = 16 Hermite patches, 13 samples).
 ///
 /// # Errors
-/// Never in practice.
-pub fn fig7() -> Result<Figure> {
-    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::new(0.0, TAU, 0.0, TAU), 4, 4)?;
+/// Fewer than 2 samples.
+pub fn fig7(spline: &HermiteSurface, samples: usize) -> Result<Figure> {
+    let (n, m) = (spline.u().len(), spline.v().len());
     // (i + 2j) mod 5 differs between neighbours in u and in v, across the wrap-around too;
     // 13 samples per patch side keep the 16 patches' mesh lines apart at this size.
-    Ok(
-        Plot3d::new("Fig 7 — the whole torus as 4×4 = 16 Hermite patches")
-            .patches(&spline, 13, 1.0, false, |i, j| {
-                PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]
-            })?
-            .figure(),
-    )
+    Ok(Plot3d::new(format!(
+        "Fig 7 — the surface as {n}×{m} = {} Hermite patches",
+        n * m
+    ))
+    .patches(spline, samples, 1.0, false, |i, j| {
+        PATCH_PALETTE[(i + 2 * j) % PATCH_PALETTE.len()]
+    })?
+    .figure())
 }
 
-/// Fig 8: the 9 patches of `n = m = 3` (Codice 14).
+/// Fig 8: the patches of a spline surface in Codice 14's colours, `REPORT_PREC` samples per
+/// side (the seed's: the 9 patches of `n = m = 3` on `[0, 1]²`).
 ///
 /// # Errors
 /// Never in practice.
-pub fn fig8() -> Result<Figure> {
-    let spline = HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 3, 3)?;
+pub fn fig8(spline: &HermiteSurface) -> Result<Figure> {
+    let (n, m) = (spline.u().len(), spline.v().len());
     // Codice 14: colors(mod(i,3)+1, :) for patch row i (1-based)
-    let plot = Plot3d::new("Fig 8 — the 9 patches of n = m = 3 on [0,1]² (Codice 14)")
-        .view(PATCH_VIEW)
-        .patches(&spline, REPORT_PREC, FACE_ALPHA, true, |i, _| {
-            codice14_color(i)
-        })?;
-    Ok((0..3)
+    let plot = Plot3d::new(format!(
+        "Fig 8 — the {} patches of n = {n}, m = {m} (Codice 14)",
+        n * m
+    ))
+    .view(PATCH_VIEW)
+    .patches(spline, REPORT_PREC, FACE_ALPHA, true, |i, _| {
+        codice14_color(i)
+    })?;
+    Ok((0..n.min(3))
         .fold(plot, |p, i| {
             p.legend(format!("patch row i = {}", i + 1), codice14_color(i))
         })

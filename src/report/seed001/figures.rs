@@ -22,12 +22,21 @@ use crate::seeds::seed001 as data;
 use nalgebra::{Vector1, Vector2};
 use plotters::prelude::SeriesLabelPosition;
 
-/// Seed 001: the B-spline bases of degree 1 on `(0,0,1,2,3,4,5,5)` and degree 2 on
-/// `(0,0,0,1,2,3,4,4,4)`.
-pub fn bspline_bases() -> Result<Figure> {
+/// B-spline bases, one panel each, stacked (the seed's: degree 1 on `(0,0,1,2,3,4,5,5)` and
+/// degree 2 on `(0,0,0,1,2,3,4,4,4)`, [`seed_bases`]).
+///
+/// # Errors
+/// No basis.
+pub fn bspline_bases(bases: &[BSplineBasis]) -> Result<Figure> {
+    if bases.is_empty() {
+        return Err(crate::report::Error::Figure {
+            name: "bspline_bases".into(),
+            message: "no basis to draw".into(),
+        });
+    }
     let mut panels = Vec::new();
-    for (degree, knots) in [(1, data::BASIS_N1.to_vec()), (2, data::BASIS_N2.to_vec())] {
-        let basis = BSplineBasis::try_new(KnotVector::try_new(knots)?, degree)?;
+    for basis in bases {
+        let degree = basis.degree();
         let (a, b) = basis.domain();
         let ts = linspace(a, b, SAMPLES);
         let values: Vec<Vec<f64>> = ts.iter().map(|&t| basis.all(t)).collect();
@@ -48,19 +57,38 @@ pub fn bspline_bases() -> Result<Figure> {
         }
         panels.push(panel);
     }
+    let rows = panels.len();
     Ok(Figure::from(Figure2d::new(
-        "B-spline bases (seed 001), Cox–de Boor, right end included",
+        "B-spline bases, Cox–de Boor, right end included",
         panels,
-        (2, 1),
+        (rows, 1),
     )))
 }
 
-/// Seed 001: moving `P₄` of the cubic on `{0,0,0,0,¼,½,¾,1,1,1,1}` changes the curve only
-/// on `[¼, 1)`.
-pub fn bspline_locality() -> Result<Figure> {
-    let curve = data::locality_curve()?;
-    let moved = curve.with_point(data::LOCALITY_INDEX, data::locality_moved_point())?;
-    let ts = linspace(0.0, 1.0, SAMPLES);
+/// Seed 001's two example bases (degree 1 and 2).
+///
+/// # Errors
+/// Never in practice.
+pub fn seed_bases() -> Result<Vec<BSplineBasis>> {
+    Ok(vec![
+        BSplineBasis::try_new(KnotVector::try_new(data::BASIS_N1.to_vec())?, 1)?,
+        BSplineBasis::try_new(KnotVector::try_new(data::BASIS_N2.to_vec())?, 2)?,
+    ])
+}
+
+/// Locality: moving control point `index` of `curve` to `to` changes the curve only on the
+/// support `[t_i, t_{i+p+1})` of its basis function (the seed's: `P₄` of the cubic on
+/// `{0,0,0,0,¼,½,¾,1,1,1,1}`, which changes only on `[¼, 1)`).
+///
+/// # Errors
+/// An index beyond the control points; a non-finite `to`.
+pub fn bspline_locality(curve: &BSplineCurve<2>, index: usize, to: Vector2<f64>) -> Result<Figure> {
+    let moved = curve.with_point(index, to)?;
+    let knots = curve.basis().knots().knots();
+    let p = curve.basis().degree();
+    let (start, end) = (knots[index], knots[index + p + 1]);
+    let (a, b) = curve.basis().domain();
+    let ts = linspace(a, b, SAMPLES);
     let diff: Vec<(f64, f64)> = ts
         .iter()
         .map(|&t| (t, (moved.point(t) - curve.point(t)).norm()))
@@ -69,7 +97,7 @@ pub fn bspline_locality() -> Result<Figure> {
         .equal()
         .legend_at(SeriesLabelPosition::UpperLeft)
         .with(Series::polygon("control polygon", curve.points()))
-        .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
+        .with(Series::line("C(t)", trace(curve)?, C[0]).width(3))
         .with(
             Series::line("after moving P₄", trace(&moved)?, C[1])
                 .styled(Style::Dashed)
@@ -77,70 +105,112 @@ pub fn bspline_locality() -> Result<Figure> {
         )
         .with(
             Series::line(
-                "P₄ → P₄′",
-                xy(&[
-                    curve.points()[data::LOCALITY_INDEX],
-                    data::locality_moved_point(),
-                ]),
+                format!("P{index} → P{index}′"),
+                xy(&[curve.points()[index], to]),
                 BLACK,
             )
             .styled(Style::LinePoints(6)),
         );
-    let bottom = Panel::new(
-        "distance between the curves at the same t: zero on [0, 1/4]",
+    let shift = (to - curve.points()[index]).norm();
+    let mut bottom = Panel::new(
+        format!("distance between the curves at the same t: zero outside [{start}, {end})"),
         "t",
         "distance",
     )
     .legend_at(SeriesLabelPosition::UpperLeft)
-    .with(Series::line("|C_moved(t) − C(t)|", diff, C[1]).width(3))
-    .with(
-        Series::line(
-            "t = 1/4",
-            vec![(0.25, 0.0), (0.25, data::locality_shift())],
-            GREY,
-        )
-        .styled(Style::Dashed),
-    );
+    .with(Series::line("|C_moved(t) − C(t)|", diff, C[1]).width(3));
+    for edge in [start, end] {
+        if a < edge && edge < b {
+            bottom = bottom.with(
+                Series::line(
+                    format!("t = {edge}"),
+                    vec![(edge, 0.0), (edge, shift)],
+                    GREY,
+                )
+                .styled(Style::Dashed),
+            );
+        }
+    }
     Ok(Figure::from(Figure2d::new(
-        "Locality: cubic B-spline, knots {0,0,0,0,¼,½,¾,1,1,1,1}, P₄ moved",
+        format!(
+            "Locality: B-spline of degree {p}, knots {}, P{index} moved",
+            curve.basis().knots()
+        ),
         vec![top, bottom],
         (2, 1),
     )))
 }
 
-/// Seed 001: the quadratic spline curve on `{0,0,0,1/8,…,7/8,1,1,1}`.
-pub fn bspline_quadratic() -> Result<Figure> {
-    let curve = data::quadratic_example()?;
-    let knots: Vec<Vector2<f64>> = (0..=8).map(|k| curve.point(k as f64 / 8.0)).collect();
-    let panel = Panel::new("10 control points, order m = 3", "x", "y")
-        .equal()
-        .legend_at(SeriesLabelPosition::LowerRight)
-        .with(Series::polygon("control polygon", curve.points()))
-        .with(Series::line("C(t)", trace(&curve)?, C[0]).width(3))
-        .with(Series::line("C(k/8): segment joints", xy(&knots), C[1]).styled(Style::Points(5)));
+/// A spline curve with its control polygon and the joints of its pieces `C(t_k)` at the
+/// distinct knots (the seed's: the quadratic on `{0,0,0,1/8,…,7/8,1,1,1}`).
+///
+/// # Errors
+/// Never in practice (the curve is valid).
+pub fn bspline_quadratic(curve: &BSplineCurve<2>) -> Result<Figure> {
+    let mut distinct = curve.basis().knots().knots().to_vec();
+    distinct.dedup();
+    let (a, b) = curve.basis().domain();
+    let knots: Vec<Vector2<f64>> = distinct
+        .iter()
+        .filter(|&&t| a <= t && t <= b)
+        .map(|&t| curve.point(t))
+        .collect();
+    let panel = Panel::new(
+        format!(
+            "{} control points, order m = {}",
+            curve.points().len(),
+            curve.basis().order()
+        ),
+        "x",
+        "y",
+    )
+    .equal()
+    .legend_at(SeriesLabelPosition::LowerRight)
+    .with(Series::polygon("control polygon", curve.points()))
+    .with(Series::line("C(t)", trace(curve)?, C[0]).width(3))
+    .with(Series::line("C(t_k): segment joints", xy(&knots), C[1]).styled(Style::Points(5)));
     Ok(Figure::from(Figure2d::new(
-        "Quadratic B-spline curve, knots {0,0,0,1/8,…,7/8,1,1,1} (seed 001)",
+        format!(
+            "B-spline curve of degree {}, knots {}",
+            curve.basis().degree(),
+            curve.basis().knots()
+        ),
         vec![panel],
         (1, 1),
     )))
 }
 
-/// Seed 001: the exact circles from 7 and 9 weighted control points.
-pub fn nurbs_circles() -> Result<Figure> {
+/// NURBS curves side by side, each beside the B-spline of its control points with all
+/// weights 1 (the seed's: the exact circles from 7 and 9 weighted control points,
+/// `NurbsCurve::circle7` and `circle9`).
+///
+/// # Errors
+/// No curve.
+pub fn nurbs_circles(curves: &[NurbsCurve<2>]) -> Result<Figure> {
+    if curves.is_empty() {
+        return Err(crate::report::Error::Figure {
+            name: "nurbs_circles".into(),
+            message: "no curve to draw".into(),
+        });
+    }
     let mut panels = Vec::new();
-    for (name, circle) in [
-        (
-            "7 points, weights 1, ½, 1, …",
-            NurbsCurve::circle7(Vector2::zeros(), 1.0)?,
-        ),
-        (
-            "9 points, weights 1, √2/2, 1, …",
-            NurbsCurve::circle9(Vector2::zeros(), 1.0)?,
-        ),
-    ] {
+    for circle in curves {
+        let w = circle.weights();
+        let name = format!(
+            "{} points, weights {}, …",
+            circle.points().len(),
+            w.iter()
+                .take(3)
+                .map(|x| format!("{x:.4}")
+                    .trim_end_matches('0')
+                    .trim_end_matches('.')
+                    .to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
         let unit = BSplineCurve::try_new(circle.basis().clone(), circle.points().to_vec())?;
         panels.push(
-            Panel::new(name, "x", "y")
+            Panel::new(name.as_str(), "x", "y")
                 .equal()
                 .legend_at(SeriesLabelPosition::LowerRight)
                 .with(Series::polygon("control polygon", circle.points()))
@@ -148,46 +218,52 @@ pub fn nurbs_circles() -> Result<Figure> {
                     Series::line("same points, all weights 1", trace(&unit)?, C[1])
                         .styled(Style::Dashed),
                 )
-                .with(Series::line("NURBS", trace(&circle)?, C[0]).width(3)),
+                .with(Series::line("NURBS", trace(circle)?, C[0]).width(3)),
         );
     }
+    let columns = panels.len();
     Ok(Figure::from(
         Figure2d::new(
-            "The exact circle as a quadratic NURBS (seed 001)",
+            "Rational B-splines (NURBS) and their control points",
             panels,
-            (1, 2),
+            (1, columns),
         )
         .shared_legend(),
     ))
 }
 
-/// Seed 001: one weight as a shape parameter.
-pub fn nurbs_weights() -> Result<Figure> {
-    let base = data::weight_example()?;
+/// One weight as a shape parameter: the weight of control point `index` of `base` set to
+/// each of `weights` in turn (the seed's: `P₃` of a cubic with weights 0.05 … 20).
+///
+/// # Errors
+/// An index beyond the control points; a weight that is not positive and finite.
+pub fn nurbs_weights(base: &NurbsCurve<2>, index: usize, weights: &[f64]) -> Result<Figure> {
     let mut panel = Panel::new(
-        format!("weight w of P{} varied, all others 1", data::WEIGHT_INDEX),
+        format!("weight w of P{index} varied, the others as given"),
         "x",
         "y",
     )
     .equal()
     .legend_at(SeriesLabelPosition::LowerRight)
     .with(Series::polygon("control polygon", base.points()));
-    for (k, &w) in data::WEIGHTS.iter().enumerate() {
-        let c = base.with_weight(data::WEIGHT_INDEX, w)?;
+    for (k, &w) in weights.iter().enumerate() {
+        let c = base.with_weight(index, w)?;
         panel = panel.with(Series::line(format!("w = {w}"), trace(&c)?, C[k % C.len()]));
     }
     Ok(Figure::from(Figure2d::new(
-        "NURBS: a weight pulls the curve towards its control point (seed 001)",
+        "NURBS: a weight pulls the curve towards its control point",
         vec![panel],
         (1, 1),
     )))
 }
 
-/// Seed 001: Runge's phenomenon, degree 9, equispaced vs Chebyshev nodes, and the error vs
-/// degree.
-pub fn runge_figure() -> Result<Figure> {
+/// Runge's phenomenon: the interpolants of degree `degree` on equispaced and Chebyshev
+/// nodes, and the largest error for each of `degrees` (the seed's: 9, and 2 … 20).
+///
+/// # Errors
+/// A degree beyond the interpolants' limit.
+pub fn runge_figure(degree: usize, degrees: &[usize]) -> Result<Figure> {
     let (a, b) = RUNGE_INTERVAL;
-    let degree = data::RUNGE_DEGREE;
     let mut top = Panel::new(
         format!("degree {degree}: interpolants of 1/(1+x²)"),
         "x",
@@ -222,7 +298,7 @@ pub fn runge_figure() -> Result<Figure> {
     )
     .log(false, true)
     .legend_at(SeriesLabelPosition::UpperLeft);
-    let rows = data::runge_rows()?;
+    let rows = data::runge_rows_for(degrees)?;
     for (k, family) in [NodeFamily::Equispaced, NodeFamily::Chebyshev]
         .into_iter()
         .enumerate()
@@ -243,9 +319,12 @@ pub fn runge_figure() -> Result<Figure> {
     )))
 }
 
-/// Seed 001: uniform, chord-length and centripetal parameters for one data set.
-pub fn parametrizations() -> Result<Figure> {
-    let points = data::PARAM_POINTS.map(|(x, y)| Vector2::new(x, y));
+/// Uniform, chord-length and centripetal parameters for one data set: the natural cubic
+/// spline curve of `points` under each (the seed's: [`data::PARAM_POINTS`], unevenly spaced).
+///
+/// # Errors
+/// The errors of the spline (too few points, repeated points).
+pub fn parametrizations(points: &[Vector2<f64>]) -> Result<Figure> {
     let mut panel = Panel::new(
         "natural cubic spline curves through the same points",
         "x",
@@ -253,32 +332,46 @@ pub fn parametrizations() -> Result<Figure> {
     )
     .equal()
     .legend_at(SeriesLabelPosition::UpperLeft)
-    .with(Series::line("data", xy(&points), BLACK).styled(Style::Points(6)));
+    .with(Series::line("data", xy(points), BLACK).styled(Style::Points(6)));
     for (k, param) in Parametrization::ALL.into_iter().enumerate() {
-        let s = CubicSpline::curve(&points, param, EndCondition::Natural)?;
+        let s = CubicSpline::curve(points, param, EndCondition::Natural)?;
         panel = panel.with(Series::line(param.legend(), trace(&s)?, C[k]).width(3));
     }
     Ok(Figure::from(Figure2d::new(
-        "Parametrization of interpolation points (seed 001)",
+        "Parametrization of interpolation points",
         vec![panel],
         (1, 1),
     )))
 }
 
-/// Seeds 001 and 004: the four end conditions of the cubic spline on samples of `sin`.
-pub fn cubic_spline_ends() -> Result<Figure> {
-    let (x, y) = data::spline_ends_data();
+/// The cubic spline of samples of `f` at the nodes `x` under each of `ends`, beside the
+/// piecewise-linear interpolant, and their errors (the seeds': 7 samples of `sin` on
+/// `[0, 2π]`, clamped, natural, periodic and anticyclic ends).
+///
+/// # Errors
+/// The errors of the splines (too few or unsorted nodes, ends the data cannot have).
+pub fn cubic_spline_ends(
+    name: &str,
+    f: impl Fn(f64) -> f64,
+    x: &[f64],
+    ends: &[EndCondition<1>],
+) -> Result<Figure> {
+    let y: Vec<f64> = x.iter().map(|&t| f(t)).collect();
+    let linear =
+        PiecewiseLinear::try_new(x, &y.iter().map(|&v| Vector1::new(v)).collect::<Vec<_>>())?;
     let (a, b) = (x[0], x[x.len() - 1]);
-    let mut top = Panel::new("7 samples of sin x on [0, 2π]", "x", "s(x)")
-        .legend_at(SeriesLabelPosition::LowerLeft)
-        .with(Series::line("sin x", sampled(a, b, |t| (t, t.sin())), BLACK).width(3));
+    let mut top = Panel::new(
+        format!("{} samples of {name} on [{a:.4}, {b:.4}]", x.len()),
+        "x",
+        "s(x)",
+    )
+    .legend_at(SeriesLabelPosition::LowerLeft)
+    .with(Series::line(name, sampled(a, b, |t| (t, f(t))), BLACK).width(3));
     // the error vanishes at the nodes; 1e-6 floors it there for the log axis
     let floored = |e: f64| e.abs().max(1e-6);
-    let mut bottom = Panel::new("error |s(x) − sin x|", "x", "|error| (log scale)")
+    let mut bottom = Panel::new(format!("error |s(x) − {name}|"), "x", "|error| (log scale)")
         .log(false, true)
         .legend_at(SeriesLabelPosition::LowerLeft);
-    let linear =
-        PiecewiseLinear::try_new(&x, &y.iter().map(|&v| Vector1::new(v)).collect::<Vec<_>>())?;
     top = top.with(
         Series::line(
             "piecewise linear",
@@ -287,8 +380,8 @@ pub fn cubic_spline_ends() -> Result<Figure> {
         )
         .styled(Style::Dashed),
     );
-    for (k, end) in data::end_conditions().into_iter().enumerate() {
-        let s = CubicSpline::function(&x, &y, end)?;
+    for (k, &end) in ends.iter().enumerate() {
+        let s = CubicSpline::function(x, &y, end)?;
         // natural and periodic ends give the same spline on these data: dash the second
         let style = if matches!(end, EndCondition::Periodic) {
             Style::Dashed
@@ -301,7 +394,7 @@ pub fn cubic_spline_ends() -> Result<Figure> {
         bottom = bottom.with(
             Series::line(
                 end.legend(),
-                sampled(a, b, |t| (t, floored(s.value(t) - t.sin()))),
+                sampled(a, b, |t| (t, floored(s.value(t) - f(t)))),
                 C[k],
             )
             .styled(style),
@@ -317,11 +410,6 @@ pub fn cubic_spline_ends() -> Result<Figure> {
         .unlabeled(),
     );
     Ok(Figure::from(
-        Figure2d::new(
-            "Cubic spline end conditions: clamped, natural, periodic, anticyclic",
-            vec![top, bottom],
-            (2, 1),
-        )
-        .shared_legend(),
+        Figure2d::new("Cubic spline end conditions", vec![top, bottom], (2, 1)).shared_legend(),
     ))
 }

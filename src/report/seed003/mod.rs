@@ -5,6 +5,7 @@ pub mod figures;
 pub mod tables;
 
 use crate::report::Output;
+use crate::seeds::seed003 as data;
 
 /// Seed 003's outputs, in generation order.
 pub const OUTPUTS: &[Output] = &[
@@ -31,21 +32,21 @@ pub const OUTPUTS: &[Output] = &[
     Output::figure(
         "fig-blending-curves",
         "Seed 003: sliding windows, Lagrange (interpolating) vs the bspline procedure",
-        figures::blending_curves,
+        || figures::blending_curves(&data::four_way_points(7)),
     ),
     Output::figure(
         "fig-four-way",
         "Seed 003: cubic spline, OpenGL spline, Casteljau, Bézier for 6 and 7 points",
-        figures::four_way,
+        || figures::four_way(&[data::four_way_points(6), data::four_way_points(7)], 5),
     ),
     Output::figure(
         "fig-opengl-evaluator",
         "Seed 003: the OpenGL-evaluator spline, last group intended vs as printed",
-        figures::opengl_last_group,
+        || figures::opengl_last_group(&data::four_way_points(7)),
     ),
     Output::figure(
         "fig-sliding-bicubic",
         "Seed 003: bicubic surface of a 4×4 window sliding over a 7×7 grid",
-        figures::sliding_bicubic,
+        || figures::sliding_bicubic(&data::sliding_grid()),
     ),
 ];

@@ -29,7 +29,7 @@ fn v(x: f64, y: f64) -> V {
 const REFERENCE: usize = 1200;
 
 /// The control polygon of Figs 1 and 2 (the paper's is lost).
-const POLYGON: [(f64, f64); 6] = [
+pub const POLYGON: [(f64, f64); 6] = [
     (0.0, 0.0),
     (1.0, 2.2),
     (3.0, 2.6),
@@ -38,14 +38,24 @@ const POLYGON: [(f64, f64); 6] = [
     (7.0, 2.0),
 ];
 
-fn polygon() -> Vec<V> {
-    POLYGON.iter().map(|&(x, y)| v(x, y)).collect()
+/// Rows and columns for `n` panels, at most `columns` a row.
+fn layout(n: usize, columns: usize) -> Result<(usize, usize)> {
+    if n == 0 {
+        return Err(crate::report::Error::Figure {
+            name: "seed 004".into(),
+            message: "no panel to draw: give at least one case".into(),
+        });
+    }
+    Ok((n.div_ceil(columns), n.min(columns)))
 }
 
 /// Fig. 1: a Bézier curve and its defining polygon; the curve passes through the first and
-/// last vertices only.
-pub fn bezier() -> Result<Figure> {
-    let p = polygon();
+/// last vertices only (the seed's: `bezier(&plane_points(&POLYGON))`, [`crate::curve::plane_points`]).
+///
+/// # Errors
+/// As [`BSplineCurve::with_order`] (fewer than two vertices, non-finite ones).
+pub fn bezier(polygon: &[V]) -> Result<Figure> {
+    let p = polygon.to_vec();
     let curve = BSplineCurve::with_order(p.clone(), p.len())?;
     Ok(Plot2d::new(
         "Fig. 1: a Bézier curve and its polygon (seed 004)",
@@ -59,10 +69,17 @@ pub fn bezier() -> Result<Figure> {
 
 /// Fig. 2: one polygon drawn as B-splines of every order, from the polygon itself (`k = 2`)
 /// to the Bézier curve (`k = n + 1`).
-pub fn bspline_orders() -> Result<Figure> {
-    let p = polygon();
+///
+/// # Errors
+/// As [`BSplineCurve::with_order`] (fewer than two vertices, non-finite ones).
+pub fn bspline_orders(polygon: &[V]) -> Result<Figure> {
+    let p = polygon.to_vec();
+    BSplineCurve::with_order(p.clone(), 2)?;
     let mut plot = Plot2d::new(
-        "Fig. 2: one polygon, B-splines of order k = 2 … 6 (seed 004)",
+        format!(
+            "Fig. 2: one polygon, B-splines of order k = 2 … {} (seed 004)",
+            p.len()
+        ),
         "x",
         "y",
     )
@@ -170,22 +187,35 @@ fn frame_panel(title: &str, guides: (V, V), annotate: bool) -> Result<Panel> {
     Ok(panel)
 }
 
+/// The guides of Fig. 3 (ours; the paper's are not stated): below the chord.
+pub const FRAME_GUIDES: (V, V) = (V::new(-0.845, -0.841), V::new(1.072, -0.94));
+/// The guides of Fig. 4: those of Fig. 3 mirrored above the chord.
+pub const REFLECTION_GUIDES: (V, V) = (V::new(-0.845, 0.841), V::new(1.072, 0.94));
+
 /// Fig. 3: the Angular spline's local frame: the chord on the x-axis with its midpoint at the
 /// origin, the circles `C_i`, `C_{i+1}` through three consecutive points with centres on the
-/// y-axis, the radii at `P_i`, `P_{i+1}` and the end tangents.
-pub fn angular_frame() -> Result<Figure> {
+/// y-axis, the radii at `P_i`, `P_{i+1}` and the end tangents, for the guides `P_{i−1}`,
+/// `P_{i+2}` of the chord `(−1, 0) → (1, 0)` (the seed's figure: `(−0.845, −0.841)`,
+/// `(1.072, −0.94)`).
+///
+/// # Errors
+/// As [`AngularSpline::try_new`].
+pub fn angular_frame(guides: (V, V)) -> Result<Figure> {
     let panel = frame_panel(
         "Fig. 3: the local frame of an Angular piece (guides below: the standard case)",
-        (v(-0.845, -0.841), v(1.072, -0.94)),
+        guides,
         true,
     )?;
     Ok(Figure2d::new("", vec![panel], (1, 1)).into())
 }
 
 /// Fig. 4: the reflection case: both guides above the chord; the piece is the standard piece
-/// of the mirrored guides `P′_{i−1}`, `P′_{i+2}`, mirrored back.
-pub fn angular_reflection() -> Result<Figure> {
-    let above = (v(-0.845, 0.841), v(1.072, 0.94));
+/// of the mirrored guides `P′_{i−1}`, `P′_{i+2}`, mirrored back (the seed's figure: the guides
+/// of [`angular_frame`] mirrored, `(−0.845, 0.841)`, `(1.072, 0.94)`).
+///
+/// # Errors
+/// As [`AngularSpline::try_new`].
+pub fn angular_reflection(above: (V, V)) -> Result<Figure> {
     let mirrored = (
         above.0.component_mul(&v(1.0, -1.0)),
         above.1.component_mul(&v(1.0, -1.0)),
@@ -219,94 +249,127 @@ pub fn angular_reflection() -> Result<Figure> {
 /// of a circle), asymmetric, both above (reflected), opposite sides (an inflection, rule A1),
 /// a guide near the chord's line (the turn gathers at the far end: on the line itself the
 /// limit has a corner, and the spline refuses it), guides inside the chord's circle (a major
-/// arc). The paper's six configurations are not stated (spec A18).
-pub fn angular_pieces() -> Result<Figure> {
-    // short titles: the piece's case follows in brackets, and three panels share a row
-    let configs = [
+/// arc). The paper's six configurations are not stated (spec A18); [`angular_cases`] are ours.
+/// Each case is a short title (the piece's case follows it in brackets) and the two guides.
+///
+/// # Errors
+/// No case; the errors of [`AngularSpline::try_new`].
+pub fn angular_pieces(cases: &[(&str, V, V)]) -> Result<Figure> {
+    let panels = cases
+        .iter()
+        .map(|&(title, a, b)| frame_panel(title, (a, b), false))
+        .collect::<Result<Vec<_>>>()?;
+    let layout = layout(panels.len(), 3)?;
+    Ok(Figure2d::new(
+        format!(
+            "Fig. 5: Angular pieces from P_i = (−1, 0) to P_i+1 = (1, 0) for {} pairs of guides",
+            panels.len()
+        ),
+        panels,
+        layout,
+    )
+    .shared_legend()
+    .into())
+}
+
+/// The six pairs of guides of Fig. 5 (ours; the paper's are not stated).
+pub fn angular_cases() -> Vec<(&'static str, V, V)> {
+    vec![
         ("a) symmetric: an arc", v(-1.8, -1.2), v(1.8, -1.2)),
         ("b) asymmetric", v(-1.6, -0.8), v(1.2, -1.5)),
         ("c) both above", v(-1.8, 1.2), v(1.6, 0.8)),
         ("d) opposite sides", v(-1.8, -1.0), v(1.8, 1.0)),
         ("e) guide near the line", v(-2.0, -0.15), v(1.8, -1.0)),
         ("f) guides inside", v(0.0, -0.5), v(0.0, -0.5)),
-    ];
-    let panels = configs
-        .iter()
-        .map(|&(title, a, b)| frame_panel(title, (a, b), false))
-        .collect::<Result<Vec<_>>>()?;
-    Ok(Figure2d::new(
-        "Fig. 5: Angular pieces from P_i = (−1, 0) to P_i+1 = (1, 0) for six pairs of guides",
-        panels,
-        (2, 3),
-    )
-    .shared_legend()
-    .into())
+    ]
 }
 
-/// The cardinal spline's parameter on the 4-point circle (closed, 4 + 3 points): the
-/// polygon-like `a → 0`, Catmull–Rom `a = ½`, the paper's 0.83 and a swollen 1.2.
-pub fn cardinal_a() -> Result<Figure> {
-    let circle = Shape::Circle;
-    let q: Vec<V> = (0..4).map(|i| circle.point(TAU * i as f64 / 4.0)).collect();
-    let cases: Vec<(Method, Vec<V>, bool)> = [0.2, 0.5, 0.83, 1.2]
+/// The cardinal spline's parameter on `count` points equally spaced round a closed `shape`,
+/// one panel per value of `a` (the seed's: the 4-point circle with the polygon-like `a → 0`,
+/// Catmull–Rom `a = ½`, the paper's 0.83 and a swollen 1.2).
+///
+/// # Errors
+/// An open shape, no value of `a`; the errors of the shape and of the cardinal spline.
+pub fn cardinal_a(shape: &Shape, count: usize, a_values: &[f64]) -> Result<Figure> {
+    let shape = shape.validated()?;
+    if !shape.is_closed() {
+        return Err(crate::error::Error::Degenerate {
+            what: "cardinal_a's shape",
+            reason: "the shape is open; the figure goes round a closed shape",
+        }
+        .into());
+    }
+    crate::error::size("points", count)?;
+    let q: Vec<V> = (0..count)
+        .map(|i| shape.point(TAU * i as f64 / count as f64))
+        .collect();
+    let cases: Vec<(Method, Vec<V>, bool)> = a_values
         .iter()
         .map(|&a| (Method::Cardinal { a }, q.clone(), true))
         .collect();
     draw::methods(
-        "The cardinal spline's a on the 4-point circle (seed 004: a = 0.83 for the circle)",
-        &circle.reference(REFERENCE)?,
-        &cases,
-        (2, 2),
-    )
-}
-
-/// The four printed cells of one column of Table I, each with the paper's count and
-/// parameter and points placed by the stated rule.
-///
-/// # Errors
-/// [`crate::report::Error::UnknownId`] for a column beyond the nine; the errors of the
-/// point rules and the methods.
-pub fn shape_column(column: usize) -> Result<Figure> {
-    let &(name, shape) =
-        data::SHAPES
-            .get(column)
-            .ok_or_else(|| crate::report::Error::UnknownId {
-                what: "Table I column (0–8)",
-                id: column.to_string(),
-            })?;
-    let cases = TABLE_I
-        .iter()
-        .filter(|c| c.column == column)
-        .map(|c| {
-            let set = paper_points(&shape, &c.method, c.points)?;
-            Ok((c.method, set.points, set.closed))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    // a printed count the method cannot have is drawn with the count the points give
-    let flagged: String = TABLE_I
-        .iter()
-        .filter(|c| c.column == column)
-        .filter_map(|c| {
-            let set = paper_points(&shape, &c.method, c.points).ok()?;
-            let drawn = c.method.counted_points(set.points.len(), set.closed);
-            (drawn != c.points).then(|| {
-                format!(
-                    " (printed {} {}, drawn with {drawn})",
-                    c.method.legend(),
-                    c.points
-                )
-            })
-        })
-        .collect();
-    draw::methods(
         format!(
-            "Seed 004, {name} ({}): the four methods with Table I's counts{flagged}",
+            "The cardinal spline's a on {count} points of the {}",
             shape.name()
         ),
         &shape.reference(REFERENCE)?,
         &cases,
-        (2, 2),
+        layout(cases.len(), 2)?,
     )
+}
+
+/// One shape under several methods, each with its own count of points placed by the seed's
+/// rule ([`paper_points`]); a count the method cannot have (the paper's Angular "5 (?)" on
+/// the ellipse) is drawn with the count the points give, and the title says so. Table I's
+/// column `c` is `shape_methods(&SHAPES[c].1, &cells)` with the column's printed cells.
+///
+/// # Errors
+/// No cell; the errors of the point rules and the methods.
+pub fn shape_methods(shape: &Shape, cells: &[(Method, usize)]) -> Result<Figure> {
+    let mut cases = Vec::with_capacity(cells.len());
+    let mut flagged = String::new();
+    for &(method, count) in cells {
+        let set = paper_points(shape, &method, count)?;
+        let drawn = method.counted_points(set.points.len(), set.closed);
+        if drawn != count {
+            flagged += &format!(" (printed {} {count}, drawn with {drawn})", method.legend());
+        }
+        cases.push((method, set.points, set.closed));
+    }
+    draw::methods(
+        format!("Seed 004, the {}: four methods{flagged}", shape.name()),
+        &shape.reference(REFERENCE)?,
+        &cases,
+        layout(cases.len(), 2)?,
+    )
+}
+
+/// The printed cells of Table I's column `column` (0–8), as `(method, count)`.
+///
+/// # Errors
+/// [`crate::report::Error::UnknownId`] for a column beyond the nine.
+pub fn printed_column(column: usize) -> Result<(Shape, Vec<(Method, usize)>)> {
+    let &(_, shape) = data::SHAPES
+        .get(column)
+        .ok_or_else(|| crate::report::Error::UnknownId {
+            what: "Table I column (0–8)",
+            id: column.to_string(),
+        })?;
+    let cells = TABLE_I
+        .iter()
+        .filter(|c| c.column == column)
+        .map(|c| (c.method, c.points))
+        .collect();
+    Ok((shape, cells))
+}
+
+/// Table I's column `column` (0–8): its shape under the four methods with the printed counts.
+///
+/// # Errors
+/// As [`printed_column`] and [`shape_methods`].
+pub fn shape_column(column: usize) -> Result<Figure> {
+    let (shape, cells) = printed_column(column)?;
+    shape_methods(&shape, &cells)
 }
 
 macro_rules! column_figures {
@@ -332,22 +395,21 @@ column_figures! {
     rectangle = 8, "Table I's rectangle column.";
 }
 
-/// The points of one printed cell.
-fn cell_points(column: usize, family: &str) -> Result<(Shape, Vec<V>, bool)> {
-    let (_, shape) = data::SHAPES[column];
-    let c = TABLE_I
-        .iter()
-        .find(|c| c.column == column && c.method.family() == family)
-        .expect("every column has every method");
-    let set = paper_points(&shape, &c.method, c.points)?;
-    Ok((shape, set.points, set.closed))
-}
-
-/// A cross-method figure: the points of `source` fed to each of `targets` (Figs 6–8: "points
-/// optimal for one method, interpolated with another").
-fn cross(title: &str, column: usize, source: Method, targets: &[Method]) -> Result<Figure> {
-    let (shape, points, closed) = cell_points(column, source.family())?;
-    let mut cases = vec![(source, points.clone(), closed)];
+/// Points placed for one method fed to others (Figs 6–8: "points optimal for one method,
+/// interpolated with another"): `source` is the method and count whose points (by the seed's
+/// rule, [`paper_points`]) every method of `targets` then draws.
+///
+/// # Errors
+/// The errors of the point rule and the methods.
+pub fn cross_methods(
+    title: &str,
+    shape: &Shape,
+    source: (Method, usize),
+    targets: &[Method],
+) -> Result<Figure> {
+    let set = paper_points(shape, &source.0, source.1)?;
+    let (points, closed) = (set.points, set.closed);
+    let mut cases = vec![(source.0, points.clone(), closed)];
     cases.extend(targets.iter().map(|&m| (m, points.clone(), closed)));
     // wide shapes stacked, the others side by side
     let (x0, x1, y0, y1) = shape.bounding_box();
@@ -357,6 +419,16 @@ fn cross(title: &str, column: usize, source: Method, targets: &[Method]) -> Resu
         (1, cases.len())
     };
     draw::methods(title, &shape.reference(REFERENCE)?, &cases, layout)
+}
+
+/// A cross figure whose source is Table I's printed cell of `family` in `column`.
+fn cross(title: &str, column: usize, source: Method, targets: &[Method]) -> Result<Figure> {
+    let (shape, cells) = printed_column(column)?;
+    let count = cells
+        .iter()
+        .find(|(m, _)| m.family() == source.family())
+        .map_or(0, |&(_, n)| n);
+    cross_methods(title, &shape, (source, count), targets)
 }
 
 /// Fig. 6: the circle's Angular points (3, closed) under the cardinal spline with `a = 0.9` and
@@ -509,33 +581,38 @@ fn coast_reference() -> Vec<V> {
     coast
 }
 
-/// The coastline panels of the decimation experiment: about 50 points (1 in 7 of our 357; the
-/// paper took 1 in 50 of about 2500) under the Angular, the cardinal with `a = 1`, the cyclic
-/// cubic and linear interpolation — "no method shows any superiority".
-pub fn sicily_decimated() -> Result<Figure> {
-    let points = data::decimate(&data::coastline(), data::COAST_STEP);
-    let cases: Vec<(Method, Vec<V>, bool)> = [
-        Method::Angular,
-        Method::Cardinal { a: 1.0 },
-        Method::Cubic {
-            end: CubicEnd::Cyclic,
-        },
-        Method::Linear,
-    ]
-    .into_iter()
-    .map(|m| (m, points.clone(), true))
-    .collect();
+/// The coastline panels of the decimation experiment: 1 in `step` points of the coast under
+/// each of `methods` (the seed's: 1 in 7 of our 357, about 50, as the paper took 1 in 50 of
+/// about 2500, under the Angular, the cardinal with `a = 1`, the cyclic cubic and linear
+/// interpolation — "no method shows any superiority").
+///
+/// # Errors
+/// No method; the errors of the methods.
+pub fn sicily_decimated(step: usize, methods: &[Method]) -> Result<Figure> {
+    let points = data::decimate(&data::coastline(), step);
+    let cases: Vec<(Method, Vec<V>, bool)> =
+        methods.iter().map(|&m| (m, points.clone(), true)).collect();
     draw::methods(
         format!(
             "Sicily: {} points, 1 in {} of the coastline (x, y in km)",
             points.len(),
-            data::COAST_STEP
+            step.max(1)
         ),
         &coast_reference(),
         &cases,
-        (2, 2),
+        layout(cases.len(), 2)?,
     )
 }
+
+/// The seed's decimation methods: Angular, cardinal `a = 1`, cyclic cubic, linear.
+pub const SICILY_METHODS: [Method; 4] = [
+    Method::Angular,
+    Method::Cardinal { a: 1.0 },
+    Method::Cubic {
+        end: CubicEnd::Cyclic,
+    },
+    Method::Linear,
+];
 
 /// The coastline with the paper's larger counts (Angular 92, cardinal 81 with `a = 0.9`,
 /// relaxed cubic 84), points evenly spaced along our ring as the stand-in for the paper's

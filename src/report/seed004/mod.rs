@@ -19,32 +19,32 @@ pub const OUTPUTS: &[Output] = &[
     Output::figure(
         "fig-seed004-bezier",
         "Seed 004 Fig. 1: a Bézier curve and its defining polygon",
-        figures::bezier,
+        || figures::bezier(&crate::curve::plane_points(&figures::POLYGON)),
     ),
     Output::figure(
         "fig-seed004-bspline-orders",
         "Seed 004 Fig. 2: one polygon as B-splines of order 2 (the polygon) to n + 1 (Bézier)",
-        figures::bspline_orders,
+        || figures::bspline_orders(&crate::curve::plane_points(&figures::POLYGON)),
     ),
     Output::figure(
         "fig-seed004-angular-frame",
         "Seed 004 Fig. 3: the Angular piece's local frame, circles, centres and tangents",
-        figures::angular_frame,
+        || figures::angular_frame(figures::FRAME_GUIDES),
     ),
     Output::figure(
         "fig-seed004-angular-reflection",
         "Seed 004 Fig. 4: the Angular reflection case (guides above the chord)",
-        figures::angular_reflection,
+        || figures::angular_reflection(figures::REFLECTION_GUIDES),
     ),
     Output::figure(
         "fig-seed004-angular-pieces",
         "Seed 004 Fig. 5 a–f: single Angular pieces for six pairs of guides",
-        figures::angular_pieces,
+        || figures::angular_pieces(&figures::angular_cases()),
     ),
     Output::figure(
         "fig-seed004-cardinal-a",
         "Seed 004: the cardinal spline's a on the 4-point circle (0.2, 0.5, 0.83, 1.2)",
-        figures::cardinal_a,
+        || figures::cardinal_a(&crate::shapes::Shape::Circle, 4, &[0.2, 0.5, 0.83, 1.2]),
     ),
     Output::figure(
         "fig-seed004-circle",
@@ -95,6 +95,11 @@ pub const OUTPUTS: &[Output] = &[
         "table-i",
         "Seed 004 Table I regenerated: printed, the paper's rule, the fewest points found automatically",
         table_i::table,
+    ),
+    Output::table(
+        "table-i-counts",
+        "Seed 004 Table I at a glance: printed count → fewest found within 1 %, a row per method",
+        || table_i::counts_of(table_i::study()?),
     ),
     Output::figure(
         "fig-table-i",
@@ -149,7 +154,7 @@ pub const OUTPUTS: &[Output] = &[
     Output::figure(
         "fig-seed004-sicily-decimated",
         "Seed 004: the Sicilian coast decimated to about 50 points, four methods",
-        figures::sicily_decimated,
+        || figures::sicily_decimated(crate::seeds::seed004::COAST_STEP, &figures::SICILY_METHODS),
     ),
     Output::figure(
         "fig-seed004-sicily-chosen",
