@@ -464,7 +464,8 @@ impl AngularSpline {
     /// for a point; [`Error::RepeatedPoint`] for two equal consecutive points;
     /// [`Error::ReversedPoints`] if `Pᵢ₊₁ = Pᵢ₋₁` (no circle); [`Error::NoSmoothPiece`] for
     /// a piece with one end tangent on its chord line and the other not, or one pointing back
-    /// along it ([`classify`]: no G¹ piece exists); [`Error::Degenerate`] if the rule's split
+    /// along it ([`classify`]: no G¹ piece exists), or for points so close (a subnormal chord)
+    /// that a piece's tangent underflows to zero; [`Error::Degenerate`] if the rule's split
     /// is unusable; [`Error::CoordinateTooLarge`] if a piece could leave the
     /// coordinate limit.
     pub fn with_rule(points: Vec<Vector2<f64>>, rule: &dyn InflectionRule) -> Result<Self> {
@@ -511,14 +512,44 @@ impl AngularSpline {
             }
             breaks.push((j + 1) as f64);
         }
-        Ok(Self {
+        let spline = Self {
             points,
             tangents,
             kinds,
             arcs,
             breaks,
             rule: rule.name(),
-        })
+        };
+        spline.check_subnormal_pieces()?;
+        Ok(spline)
+    }
+
+    /// A piece whose chord is below `f64::MIN_POSITIVE` is computed in subnormal numbers,
+    /// which keep fewer digits the smaller they are; where its derivative at an end underflows
+    /// to zero (ends `5e-324` apart beside points of size 1) it has no tangent there, so no G¹
+    /// curve: [`Error::NoSmoothPiece`]. Pieces of normal size are not evaluated.
+    fn check_subnormal_pieces(&self) -> Result<()> {
+        for j in 0..self.kinds.len() {
+            let (p0, p1) = (self.points[j + 1], self.points[j + 2]);
+            if (p1 - p0).amax() >= f64::MIN_POSITIVE {
+                continue;
+            }
+            for s in [0.0, 1.0] {
+                let d = self
+                    .eval_piece(j, num_dual::Dual64::new(s, 1.0))
+                    .map(|c| c.eps);
+                // NaN counts as no tangent
+                let moves = d.amax() > 0.0;
+                if !moves {
+                    return Err(Error::NoSmoothPiece {
+                        point: j + 1,
+                        reason:
+                            "the points are so close that the piece's tangent underflows to zero",
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The closed Angular spline through `points`, closed as seed 004 closes it: the first

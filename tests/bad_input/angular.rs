@@ -272,5 +272,22 @@ fn sampling_cases() -> Vec<Case> {
                 })
             },
         ),
+        case("angular::subnormal_gap", || {
+            // found by the 10⁴-case random run (seed 2): consecutive points 5e-324 apart made a
+            // piece whose derivative underflowed to zero, a vanishing tangent
+            let pts = vec![
+                Vector2::new(0.0, 0.0),
+                Vector2::new(0.0, -2.8982418757243558),
+                Vector2::new(-4.696082535770794, -6.072665850216147),
+                Vector2::new(5e-324, 0.0),
+                Vector2::new(0.0, 0.0),
+                Vector2::new(0.0, -7.644987390097072),
+            ];
+            expect_err!(
+                AngularSpline::try_new(pts),
+                Error::NoSmoothPiece { point: 3, .. }
+            )?;
+            Ok(())
+        }),
     ]
 }
