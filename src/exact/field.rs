@@ -21,8 +21,11 @@ pub trait Field:
     + Div<Output = Self>
     + Neg<Output = Self>
 {
-    /// The size pivots are chosen by (the largest first): `|x|` as an `f64`.
-    fn size(&self) -> f64;
+    /// The size pivots are chosen by (the largest first): `|x|` as an `f64` (beyond `f64`'s
+    /// range infinite, never NaN, so pivots still compare).
+    fn size(&self) -> f64 {
+        self.to_f64().abs()
+    }
 
     /// Whether `self`, computed as a sum of terms of total size `scale` over `n` steps, is zero:
     /// exactly zero for exact numbers, within the rounding bound `n·ε·scale` for `f64`.
@@ -45,10 +48,6 @@ pub trait Field:
 }
 
 impl Field for f64 {
-    fn size(&self) -> f64 {
-        self.abs()
-    }
-
     fn is_negligible(&self, scale: f64, n: usize) -> bool {
         // the standard backward-error bound of an n-term sum, with a safety factor of 4
         self.abs() <= 4.0 * (n.max(1) as f64) * f64::EPSILON * scale
@@ -72,11 +71,6 @@ impl Field for f64 {
 }
 
 impl Field for Rational {
-    fn size(&self) -> f64 {
-        // beyond f64's range the size is infinite, never NaN, so pivots still compare
-        self.abs().to_f64()
-    }
-
     fn is_negligible(&self, _scale: f64, _n: usize) -> bool {
         self.is_zero()
     }

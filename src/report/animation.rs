@@ -188,19 +188,14 @@ pub fn de_casteljau(
     frames: usize,
     title: &str,
 ) -> Result<Animation> {
-    use crate::report::plot2d::{xy, Figure2d, SAMPLES};
+    use crate::report::plot2d::{Figure2d, SAMPLES};
     if !(2..=MAX_FRAMES).contains(&frames) {
         return Err(Error::Figure {
             name: "de Casteljau animation".into(),
             message: format!("{frames} frames: 2 … {MAX_FRAMES} are drawn"),
         });
     }
-    crate::error::finite_points("de Casteljau control points", points)?;
-    let curve: Vec<nalgebra::Vector2<f64>> = crate::domain::linspace(0.0, 1.0, SAMPLES)
-        .into_iter()
-        .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
-        .collect::<crate::error::Result<_>>()?;
-    let curve = xy(&curve);
+    let curve = crate::report::draw::bezier_samples(points)?;
     let mut figures = Vec::with_capacity(frames);
     for k in 0..frames {
         let u = (1000.0 * k as f64 / (frames - 1) as f64).round() / 1000.0;

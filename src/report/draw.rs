@@ -759,6 +759,20 @@ pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
         .figure()
 }
 
+/// The Bézier curve of `points` at [`SAMPLES`] parameters of `[0, 1]`, by de Casteljau, as
+/// `(x, y)` pairs: the curve every de Casteljau figure and animation draws.
+///
+/// # Errors
+/// No points; a non-finite point.
+pub(crate) fn bezier_samples(points: &[Vector2<f64>]) -> Result<Vec<(f64, f64)>> {
+    crate::error::finite_points("de Casteljau control points", points)?;
+    let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
+        .into_iter()
+        .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
+        .collect::<crate::error::Result<_>>()?;
+    Ok(xy(&curve))
+}
+
 /// One panel of de Casteljau's construction at `u`: the control polygon, the curve (`curve`,
 /// sampled), every level of interpolation down to `P(u)`; with `traced`, the curve drawn
 /// dashed and the part traced so far solid (a frame of an animation).
@@ -808,12 +822,7 @@ pub(crate) fn de_casteljau_panel(
 /// # Errors
 /// As [`crate::bezier::de_casteljau::de_casteljau`] (no points, non-finite coordinates).
 pub fn de_casteljau(points: &[Vector2<f64>], us: &[f64], title: &str) -> Result<Figure> {
-    crate::error::finite_points("de Casteljau control points", points)?;
-    let curve: Vec<Vector2<f64>> = linspace(0.0, 1.0, SAMPLES)
-        .into_iter()
-        .map(|u| crate::bezier::de_casteljau::de_casteljau(points, u))
-        .collect::<crate::error::Result<_>>()?;
-    let curve = xy(&curve);
+    let curve = bezier_samples(points)?;
     // the layout whose panels show the shape largest at equal axes (panel sizes estimated
     // from the figure size less the title, legend, axis labels and margins)
     let (lo, hi) = points.iter().fold(
