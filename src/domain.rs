@@ -64,7 +64,12 @@ impl Interval {
     /// # Errors
     /// [`Error::TooFewSamples`] if `n < 2`.
     pub fn linspace(&self, n: usize) -> Result<Vec<f64>> {
-        crate::error::samples("samples", n)?;
+        self.linspace_named("samples", n)
+    }
+
+    /// [`Interval::linspace`] whose error names the caller's argument `what` (`ns`, `prec`).
+    pub(crate) fn linspace_named(&self, what: &'static str, n: usize) -> Result<Vec<f64>> {
+        crate::error::samples(what, n)?;
         Ok(linspace(self.start, self.end, n))
     }
 

@@ -422,6 +422,49 @@ pub enum Error {
         /// What is wrong.
         message: String,
     },
+    /// An error of a layer built on the mathematics (the report layer's figures, files and
+    /// tables) carried here by `?`, so that a function returning [`Result`] can draw and
+    /// write. The conversion goes both ways and never nests: the report layer takes its own
+    /// error back out of it, and one of its errors that only carries a mathematical error
+    /// converts to that error.
+    #[error("{0}")]
+    Layer(LayerError),
+}
+
+/// The error of a layer above the mathematics, kept whole inside [`Error::Layer`] (shared,
+/// so [`Error`](enum@Error) stays `Clone`), to be taken back out by the layer that made it.
+#[derive(Clone)]
+pub struct LayerError(std::sync::Arc<dyn std::error::Error + Send + Sync + 'static>);
+
+impl LayerError {
+    /// Keeps `error`.
+    pub fn new(error: impl std::error::Error + Send + Sync + 'static) -> LayerError {
+        LayerError(std::sync::Arc::new(error))
+    }
+
+    /// The error kept, if it is a `T`.
+    pub fn downcast_ref<T: std::error::Error + 'static>(&self) -> Option<&T> {
+        self.0.downcast_ref::<T>()
+    }
+}
+
+/// Equal when they are the same error or say the same.
+impl PartialEq for LayerError {
+    fn eq(&self, other: &LayerError) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0) || self.0.to_string() == other.0.to_string()
+    }
+}
+
+impl std::fmt::Display for LayerError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl std::fmt::Debug for LayerError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.0, f)
+    }
 }
 
 impl std::fmt::Debug for Error {
@@ -430,7 +473,33 @@ impl std::fmt::Debug for Error {
     }
 }
 
-/// Shorthand for `Result<T, splinelab::Error>`.
+/// Shorthand for `Result<T, splinelab::Error>`. Not in the prelude (it would shadow std's
+/// two-parameter `Result`): write `splinelab::Result<T>` or `Result<T, splinelab::Error>`.
+///
+/// # Which error type
+/// The mathematics returns [`Error`](enum@Error); drawing, tables and files return
+/// [`crate::report::Error`] (feature `report`), which wraps [`Error`](enum@Error). Either type takes the
+/// other with `?`, so a program that computes and draws picks one for its own functions:
+///
+/// ```
+/// # #[cfg(feature = "report")]
+/// # {
+/// use splinelab::prelude::*;
+/// // the mathematics' error type, with a figure drawn inside
+/// fn torus_figure() -> splinelab::Result<Figure> {
+///     let torus = Torus::default();
+///     let spline = HermiteSurface::uniform(&torus, &Rect::unit(), 2, 2)?; // splinelab::Error
+///     Ok(Plot3d::new("torus").spline(&spline)?.figure()) // report::Error, converted
+/// }
+/// // or the report's, with the mathematics inside; std's `Result` is not shadowed
+/// fn main() -> Result<(), splinelab::report::Error> {
+///     let figure = torus_figure()?;
+///     assert!(figure.to_png()?.len() > 1000);
+///     Ok(())
+/// }
+/// # main().unwrap();
+/// # }
+/// ```
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Returns `value` if it is finite, else [`Error::NonFinite`].

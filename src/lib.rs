@@ -116,7 +116,7 @@ pub use bspline::fit::{fit_bspline, BSplineFit};
 pub use bspline::knots::{EndKnots, KnotVector};
 pub use curve::{plane_points, signed_curvature, ParametricCurve};
 pub use domain::{Interval, Partition, Rect, Span};
-pub use error::{Error, Result, MAX_COORDINATE, MAX_ELEMENTS};
+pub use error::{Error, LayerError, Result, MAX_COORDINATE, MAX_ELEMENTS};
 pub use grid::Grid;
 pub use hermite::basis::hermite_basis;
 pub use hermite::curve::HermiteCurve;

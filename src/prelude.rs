@@ -1,8 +1,27 @@
 //! What a notebook cell or a first program needs in one `use`: the points and vectors
-//! (nalgebra), the dual numbers and their trait (num-dual), and the main splinelab types and
-//! traits. An explicit list, not a glob of the crate.
+//! (nalgebra), the dual numbers and their trait (num-dual), the main splinelab types and
+//! traits, `surface!` and `symbolic`. An explicit list, not a glob of the crate.
+//!
+//! It exports no `Result` alias, so std's `Result<T, E>` keeps its two parameters in a file
+//! that uses the prelude; `splinelab::Result<T>` is `Result<T, splinelab::Error>`, and `?`
+//! converts between [`Error`] and the report layer's error both ways.
 //!
 //! # Examples
+//! ```
+//! use splinelab::prelude::*;
+//!
+//! // a surface of one's own, a `pub` struct with exact partials and formulas
+//! surface!(pub Bump = |s, t| Vector3::new(s, t, (s * t).sin()));
+//!
+//! fn main() -> Result<(), Box<dyn std::error::Error>> {   // std's Result
+//!     let d = Bump.partials(0.0, 2.0);
+//!     assert_eq!(d.ds.z, 2.0);                             // ∂/∂s sin(st) = t cos(st)
+//!     println!("{}", symbolic::surface_formulas(&Bump, 0.5, 0.5)?);
+//!     Ok(())
+//! }
+//! ```
+//!
+//! A closure works too (written over hyper-dual numbers, since a closure cannot be generic):
 //! ```
 //! use splinelab::prelude::*;
 //! // a user surface written once over hyper-dual numbers: exact X_st, no extra dependency
@@ -25,7 +44,7 @@ pub use crate::{
     plane_points, AngularSpline, BSplineBasis, BSplineCurve, BezierPatch, CardinalSpline,
     CubicSpline, EndCondition, Error, FnSurface, HermiteCurve, HermitePatch, HermiteSurface,
     Interval, KnotVector, Lagrange, Mesh, NurbsCurve, ParametricCurve, ParametricSurface,
-    Parametrization, Partition, PiecewiseLinear, Rect, Result, SurfaceDerivatives, Torus,
+    Parametrization, Partition, PiecewiseLinear, Rect, SurfaceDerivatives, Torus,
 };
 // formulas from the same generic code (`symbolic::surface_formulas(&s, 0.3, 0.7)?`), and
 // `surface!`, a user surface written once for numbers and formulas alike

@@ -25,6 +25,38 @@ use num_dual::{DualNum, HyperDual64};
 /// let d = torus.partials(0.3, 0.7);
 /// // X_st of the x coordinate is sin t sin s (seed 000 §2, Codice 3)
 /// assert!((d.dst.x - 0.7f64.sin() * 0.3f64.sin()).abs() < 1e-15);
+/// assert_eq!(torus.parameters(), vec![("R", 2.0), ("r", 1.0)]);
+/// ```
+///
+/// Written out by hand (what [`crate::surface!`] writes for you), a surface with a parameter:
+/// ```
+/// use nalgebra::Vector3;
+/// use num_dual::DualNum;
+/// use splinelab::{ParametricSurface, SurfaceDerivatives};
+///
+/// /// A helicoid of pitch `c`.
+/// pub struct Helicoid {
+///     pub c: f64,
+/// }
+///
+/// impl ParametricSurface for Helicoid {
+///     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+///         self.eval_with(s, t, &[D::from(self.c)])
+///     }
+///     fn parameters(&self) -> Vec<(&'static str, f64)> {
+///         vec![("c", self.c)]
+///     }
+///     fn eval_with<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D, p: &[D]) -> Vector3<D> {
+///         let c = p.first().copied().unwrap_or(D::from(self.c));
+///         Vector3::new(t * s.cos(), t * s.sin(), c * s)
+///     }
+/// }
+///
+/// let h = Helicoid { c: 0.5 };
+/// assert_eq!(h.partials(0.0, 2.0).ds, Vector3::new(0.0, 2.0, 0.5)); // (−t sin s, t cos s, c)
+/// let f = splinelab::symbolic::surface_formulas_with_parameters(&h, 0.0, 2.0)?;
+/// assert_eq!(f.ds[2].plain(), "c");
+/// # Ok::<(), splinelab::Error>(())
 /// ```
 pub trait ParametricSurface {
     /// `X(s, t)`. Must be written only with operations of [`DualNum`] so that derivatives
@@ -38,6 +70,30 @@ pub trait ParametricSurface {
     fn span_at(&self, s: f64, t: f64) -> Option<[crate::domain::Span; 2]> {
         let _ = (s, t);
         None
+    }
+
+    /// The surface's named parameters and their values, in the order
+    /// [`ParametricSurface::eval_with`] takes them: `[("R", 2.0), ("r", 1.0)]` for
+    /// [`Torus::default`], the fields of a [`crate::surface!`] with fields. Empty (the
+    /// default) for a surface without parameters.
+    fn parameters(&self) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
+
+    /// `X(s, t)` with the parameters given as numbers of the evaluation's type, in the order
+    /// of [`ParametricSurface::parameters`] (a missing one takes the surface's own value):
+    /// what lets [`crate::symbolic::surface_formulas_with_parameters`] print them as symbols
+    /// (`cos(s)*(R + r*cos(t))`). A surface with parameters writes its formula here once and
+    /// its `eval` calls this with its own values; the default ignores `parameters` and calls
+    /// `eval`.
+    fn eval_with<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        s: D,
+        t: D,
+        parameters: &[D],
+    ) -> Vector3<D> {
+        let _ = parameters;
+        self.eval(s, t)
     }
 }
 
@@ -96,38 +152,121 @@ impl<S: ParametricSurface + ?Sized> SurfaceDerivatives for S {
     }
 }
 
-/// Defines a unit struct `Name` that is a [`ParametricSurface`] given by one expression in `s`
-/// and `t`, generic over the number type — the way to write one's own surface once and get
-/// its points, its exact partials (hyper-dual numbers) *and* its formulas
-/// ([`crate::symbolic::surface_formulas`]), since a closure cannot be generic. Literals go
-/// on the right of an operator (`s * 2.0`), and the body sees [`num_dual::DualNum`]'s
-/// functions (`sin`, `exp`, `powi`, `sqrt`, …).
+/// Defines a [`ParametricSurface`] `Name` by one expression in `s` and `t`, generic over the
+/// number type — the way to write one's own surface once and get its points, its exact
+/// partials (hyper-dual numbers) *and* its formulas ([`crate::symbolic::surface_formulas`]),
+/// since a closure cannot be generic.
 ///
-/// In an evcxr notebook write the struct and its `impl ParametricSurface` out instead (as
-/// notebook 02's *Try it* does): evcxr runs a macro call inside a function, where the struct
-/// it defines cannot outlive the cell.
+/// - `surface!(pub Enneper = |s, t| …)` defines a unit struct; the visibility (`pub`,
+///   `pub(crate)`, none) is the struct's, so a library crate can export its surfaces.
+/// - `surface!(pub Associate { theta: f64 } = |s, t| …)` defines a struct with `f64` fields
+///   (its parameters, as visible as the struct). In the expression each field is a number of
+///   the evaluation's type (`theta.cos()`), so
+///   [`crate::symbolic::surface_formulas_with_parameters`] prints it as a symbol
+///   (`cos(theta)`) and [`crate::symbolic::surface_formulas`] as its value.
+/// - Attributes and doc comments before the name go on the struct.
+///
+/// Literals go on the right of an operator (`s * 2.0`); the expression sees
+/// [`num_dual::DualNum`]'s functions (`sin`, `exp`, `powi`, `sqrt`, …) and whatever is in
+/// scope where the macro is called (`Vector3` from the prelude).
 ///
 /// ```
-/// use splinelab::{surface, SurfaceDerivatives};
-/// use splinelab::symbolic::surface_formulas;
-/// surface!(Saddle = |s, t| nalgebra::Vector3::new(s, t, s * t.sin()));
-/// assert!((Saddle.partials(0.5, 0.25).dst.z - 0.25f64.cos()).abs() < 1e-15);
-/// assert_eq!(surface_formulas(&Saddle, 0.5, 0.25)?.dst[2].plain(), "cos(t)");
+/// use splinelab::prelude::*;
+/// use splinelab::symbolic::{surface_formulas, surface_formulas_with_parameters};
+///
+/// surface!(
+///     /// Enneper's minimal surface.
+///     pub Enneper = |s, t| Vector3::new(
+///         s - s.powi(3) / 3.0 + s * t * t,
+///         t - t.powi(3) / 3.0 + t * s * s,
+///         s * s - t * t,
+///     )
+/// );
+/// // the catenoid (θ = π/2) bent into the helicoid (θ = 0)
+/// surface!(pub Associate { theta: f64 } = |s, t| {
+///     let (c, d) = (theta.cos(), theta.sin());
+///     Vector3::new(
+///         c * t.sinh() * s.sin() + d * t.cosh() * s.cos(),
+///         d * t.cosh() * s.sin() - c * t.sinh() * s.cos(),
+///         c * s + d * t,
+///     )
+/// });
+///
+/// assert_eq!(Enneper.partials(0.5, 0.25).dst, Vector3::new(0.5, 1.0, 0.0)); // (2t, 2s, 0)
+/// assert_eq!(surface_formulas(&Enneper, 0.5, 0.25)?.point[0].plain(), "s - s^3/3 + s*t^2");
+///
+/// let bent = Associate { theta: std::f64::consts::FRAC_PI_4 };
+/// assert_eq!(bent.parameters(), vec![("theta", std::f64::consts::FRAC_PI_4)]);
+/// let f = surface_formulas_with_parameters(&bent, 0.5, 0.25)?;
+/// assert_eq!(f.point[2].plain(), "s*cos(theta) + t*sin(theta)");
 /// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// **In an evcxr notebook** put the call in a module and import the struct: evcxr keeps the
+/// items of a cell (structs, modules, `use`) from cell to cell but runs a macro call alone
+/// inside a function, where its struct would not outlive the cell (notebook 02's *Try it*):
+///
+/// ```
+/// mod mine {
+///     use splinelab::prelude::*;
+///     surface!(pub Wave { k: f64 } = |s, t| Vector3::new(s, t, (s * k).sin()));
+/// }
+/// use mine::Wave;
+/// use splinelab::prelude::*;
+/// let wave = Wave { k: 2.0 };
+/// assert_eq!(wave.partials(0.0, 0.0).ds.z, 2.0);
 /// ```
 #[macro_export]
 macro_rules! surface {
-    ($name:ident = |$s:ident, $t:ident| $body:expr) => {
+    ($(#[$meta:meta])* $vis:vis $name:ident = |$s:ident, $t:ident| $body:expr $(,)?) => {
+        $(#[$meta])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-        struct $name;
+        $vis struct $name;
         impl $crate::ParametricSurface for $name {
-            #[allow(unused_imports)]
             fn eval<D: $crate::num_dual::DualNum<Primitive = f64> + Copy>(
                 &self,
                 $s: D,
                 $t: D,
             ) -> $crate::nalgebra::Vector3<D> {
+                #[allow(unused_imports)]
                 use $crate::num_dual::DualNum as _;
+                $body
+            }
+        }
+    };
+    ($(#[$meta:meta])* $vis:vis $name:ident { $($field:ident : f64),+ $(,)? }
+        = |$s:ident, $t:ident| $body:expr $(,)?) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        $vis struct $name {
+            $(
+                #[allow(missing_docs)]
+                $vis $field: f64,
+            )+
+        }
+        impl $crate::ParametricSurface for $name {
+            fn eval<D: $crate::num_dual::DualNum<Primitive = f64> + Copy>(
+                &self,
+                s: D,
+                t: D,
+            ) -> $crate::nalgebra::Vector3<D> {
+                self.eval_with(s, t, &[$(D::from(self.$field)),+])
+            }
+            fn parameters(&self) -> ::std::vec::Vec<(&'static str, f64)> {
+                ::std::vec![$((::std::stringify!($field), self.$field)),+]
+            }
+            fn eval_with<D: $crate::num_dual::DualNum<Primitive = f64> + Copy>(
+                &self,
+                $s: D,
+                $t: D,
+                parameters: &[D],
+            ) -> $crate::nalgebra::Vector3<D> {
+                #[allow(unused_imports)]
+                use $crate::num_dual::DualNum as _;
+                let mut given = parameters.iter().copied();
+                $(
+                    let $field: D = given.next().unwrap_or_else(|| D::from(self.$field));
+                )+
                 $body
             }
         }
@@ -258,10 +397,26 @@ impl Torus {
 
 impl ParametricSurface for Torus {
     fn eval<D: DualNum<Primitive = f64> + Copy>(&self, s: D, t: D) -> Vector3<D> {
+        self.eval_with(s, t, &[D::from(self.major), D::from(self.minor)])
+    }
+
+    /// `R` (major) and `r` (minor).
+    fn parameters(&self) -> Vec<(&'static str, f64)> {
+        vec![("R", self.major), ("r", self.minor)]
+    }
+
+    fn eval_with<D: DualNum<Primitive = f64> + Copy>(
+        &self,
+        s: D,
+        t: D,
+        parameters: &[D],
+    ) -> Vector3<D> {
+        let major = parameters.first().copied().unwrap_or(D::from(self.major));
+        let minor = parameters.get(1).copied().unwrap_or(D::from(self.minor));
         let (sin_s, cos_s) = s.sin_cos();
         let (sin_t, cos_t) = t.sin_cos();
-        let ring = cos_t * self.minor + self.major;
-        Vector3::new(ring * cos_s, ring * sin_s, sin_t * self.minor)
+        let ring = cos_t * minor + major;
+        Vector3::new(ring * cos_s, ring * sin_s, sin_t * minor)
     }
 }
 
@@ -341,8 +496,8 @@ pub fn tabulate<S: SurfaceDerivatives + ?Sized>(
     ns: usize,
     nt: usize,
 ) -> Result<Grid<Vector3<f64>>> {
-    let s = rect.s.linspace(ns)?;
-    let t = rect.t.linspace(nt)?;
+    let s = rect.s.linspace_named("ns", ns)?;
+    let t = rect.t.linspace_named("nt", nt)?;
     let grid = Grid::try_from_fn(ns, nt, |i, j| surface.point(s[i], t[j]))?;
     if let Some(k) = grid
         .as_slice()

@@ -196,3 +196,51 @@ fn debug_shows_the_message_so_notebook_cells_read_well() {
         );
     }
 }
+
+/// One `Result` story (issue 48): `?` takes either error type into the other, and a round
+/// trip gives back the error it started from (no nesting), for every kind of report error.
+#[cfg(feature = "report")]
+#[test]
+fn the_two_error_types_convert_both_ways_without_nesting() {
+    use splinelab::report;
+    let core = Error::TooFewSamples {
+        what: "prec (samples per patch side)",
+        got: 1,
+    };
+    let as_report = report::Error::from(core.clone());
+    assert_eq!(as_report, report::Error::Core(core.clone()));
+    assert_eq!(Error::from(as_report), core);
+    for drawn in [
+        report::Error::Figure {
+            name: "f".into(),
+            message: "m".into(),
+        },
+        report::Error::UnknownId {
+            what: "output",
+            id: "x".into(),
+        },
+        report::Error::Io {
+            path: "out/x.png".into(),
+            message: "denied".into(),
+        },
+    ] {
+        let as_core = Error::from(drawn.clone());
+        assert_eq!(
+            as_core.to_string(),
+            drawn.to_string(),
+            "the message is kept"
+        );
+        assert!(matches!(&as_core, Error::Layer(_)));
+        assert_eq!(report::Error::from(as_core), drawn);
+    }
+    // a function of either kind takes both with `?`
+    fn mathematics_first() -> splinelab::Result<usize> {
+        let spline = HermiteSurface::uniform(&Torus::default(), &Rect::unit(), 2, 2)?;
+        let figure = report::draw::Plot3d::new("t").spline(&spline)?.figure();
+        Ok(figure.to_png()?.len())
+    }
+    fn report_first() -> report::Result<usize> {
+        Ok(mathematics_first()? + Partition::uniform(0.0, 1.0, 2)?.len())
+    }
+    assert!(report_first().unwrap() > 1000);
+}

@@ -70,3 +70,27 @@ fn the_readme_lists_every_output_and_no_other() {
     );
     assert!(readme.len() > 40, "{} ids parsed", readme.len());
 }
+
+/// The README's own-crate example is the crate CI builds and tests (`tests/own-crate`): every
+/// line of the README's block is a line of that crate's `src/lib.rs`, in order.
+#[test]
+fn the_readme_own_crate_example_is_the_crate_ci_builds() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).expect("README.md");
+    let lib = std::fs::read_to_string(format!("{root}/tests/own-crate/src/lib.rs"))
+        .expect("tests/own-crate/src/lib.rs");
+    let start = readme
+        .find("```rust,ignore\nuse splinelab::prelude::*;")
+        .expect("the README shows the own crate's lib.rs");
+    let block: Vec<&str> = readme[start..]
+        .lines()
+        .skip(1)
+        .take_while(|l| !l.starts_with("```"))
+        .collect();
+    assert!(block.len() >= 10, "{block:?}");
+    let text = block.join("\n");
+    assert!(
+        lib.contains(&text),
+        "the README's block is not tests/own-crate/src/lib.rs:\n{text}"
+    );
+}

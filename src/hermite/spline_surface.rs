@@ -17,13 +17,25 @@ use num_dual::DualNum;
 /// Built from a surface, it interpolates `X`, `X_u`, `X_v`, `X_uv` at every node `(uᵢ, vⱼ)`;
 /// neighbouring patches share their edge data, so the surface is C¹ across the seams.
 ///
+/// **Outside its domain it extrapolates**: `point`, `partials` and `eval` at a parameter
+/// beyond `[u₀, uₙ] × [v₀, vₘ]` continue the nearest end patch's polynomial (no error, no
+/// clamping); [`HermiteSurface::try_point`] refuses such a parameter instead.
+///
 /// # Examples
 /// ```
-/// use splinelab::{HermiteSurface, Partition, Torus};
+/// use splinelab::prelude::*;
 /// let u = Partition::new(vec![0.0, 0.5, 0.9, 1.0]); // Fig 6 of the report
-/// let v = Partition::uniform(0.0, 1.0, 1).unwrap();
-/// let spline = HermiteSurface::from_surface(&Torus::default(), u, v);
+/// let v = Partition::uniform(0.0, 1.0, 1)?;
+/// let torus = Torus::default();
+/// let spline = HermiteSurface::try_from_surface(&torus, u, v)?;
 /// assert_eq!(spline.patch_counts(), (3, 1));
+/// // it interpolates the torus and its partials at the nodes, exactly up to rounding
+/// let (d, e) = (spline.partials(0.5, 1.0), torus.partials(0.5, 1.0));
+/// assert!((d.dst - e.dst).norm() < 1e-14);
+/// // beyond the domain it extrapolates; `try_point` refuses
+/// assert!(spline.point(1.5, 0.5).norm().is_finite());
+/// assert!(spline.try_point(1.5, 0.5).is_err());
+/// # Ok::<(), splinelab::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct HermiteSurface {

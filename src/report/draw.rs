@@ -110,6 +110,7 @@ impl Plot3d {
         rect: &Rect,
         samples: usize,
     ) -> Result<Self> {
+        crate::error::samples("samples", samples)?;
         self.scene
             .add_surface(&tabulate(surface, rect, samples, samples)?, None, 1.0);
         Ok(self)
@@ -127,6 +128,7 @@ impl Plot3d {
         color: RGBColor,
         alpha: f64,
     ) -> Result<Self> {
+        crate::error::samples("samples", samples)?;
         self.scene.add_surface(
             &tabulate(surface, rect, samples, samples)?,
             Some(color),
@@ -155,6 +157,7 @@ impl Plot3d {
         outline: bool,
         color: impl Fn(usize, usize) -> RGBColor,
     ) -> Result<Self> {
+        crate::error::samples("samples", samples)?;
         let (n, m) = spline.patch_counts();
         for i in 0..n {
             for j in 0..m {
@@ -719,41 +722,84 @@ pub fn error_map<S: SurfaceDerivatives + ?Sized>(
 }
 
 /// The convergence plot of a study ([`crate::study::hermite_error::convergence`]): max-abs error per
-/// coordinate against the patch size `h`, log-log, with a reference slope `h⁴` one decade
-/// below the finest point.
+/// coordinate against the patch size `h`, log-log (ticks at powers of ten), with the
+/// reference slope `C·h⁴` through the largest error of the coarsest row, down to the rounding
+/// level; where an error reaches the rounding level ([`ConvergenceRow::rounding`]) the level is
+/// drawn, and below it no order is measured.
 pub fn convergence(rows: &[ConvergenceRow], title: &str) -> Figure {
     let colors = [LINE_PALETTE[1], LINE_PALETTE[0], LINE_PALETTE[2]];
     let mut plot =
         Plot2d::new(title, "patch size h = 1/n", "max |X_h − X| per coordinate").log(true, true);
     for (k, name) in ["x", "y", "z"].iter().enumerate() {
         let pts = rows.iter().map(|r| (r.h, r.errors.max_abs[k])).collect();
-        plot = plot.with(
-            Series::line(format!("coordinate {name}"), pts, colors[k]).styled(Style::LinePoints(5)),
-        );
+        // a coordinate the spline reproduces says so (an error of exactly 0 has no place on a
+        // log axis)
+        let reproduced =
+            !rows.is_empty() && rows.iter().all(|r| r.at_rounding(r.errors.max_abs[k]));
+        let label = if reproduced {
+            format!("coordinate {name}: at rounding level")
+        } else {
+            format!("coordinate {name}")
+        };
+        plot = plot.with(Series::line(label, pts, colors[k]).styled(Style::LinePoints(5)));
     }
-    let finest = rows
+    let usable = |v: f64| v.is_finite() && v > 0.0;
+    let rounding = rows
         .iter()
-        .filter(|r| r.h > 0.0)
-        .min_by(|a, b| a.h.total_cmp(&b.h));
-    let h_max = rows.iter().map(|r| r.h).fold(0.0, f64::max);
-    if let Some(last) = finest {
-        let e0 = last
+        .map(|r| r.rounding)
+        .filter(|r| usable(*r))
+        .fold(0.0, f64::max);
+    let coarsest = rows
+        .iter()
+        .filter(|r| usable(r.h))
+        .max_by(|a, b| a.h.total_cmp(&b.h));
+    let h_min = rows
+        .iter()
+        .map(|r| r.h)
+        .filter(|h| usable(*h))
+        .fold(f64::INFINITY, f64::min);
+    if let Some(first) = coarsest {
+        // C·h⁴ through the largest error of the coarsest row, down to the rounding level
+        let e0 = first
             .errors
             .max_abs
             .iter()
             .copied()
-            .filter(|e| *e > 0.0)
-            .fold(f64::INFINITY, f64::min)
-            * 0.1;
-        if e0.is_finite() {
-            let reference = [last.h, h_max]
+            .filter(|e| usable(*e))
+            .fold(0.0, f64::max);
+        if e0 > rounding && h_min < first.h {
+            let reach = if rounding > 0.0 {
+                first.h * (rounding / e0).powf(0.25)
+            } else {
+                0.0
+            };
+            let end = h_min.max(reach);
+            let reference = [first.h, end]
                 .iter()
-                .map(|&h| (h, e0 * (h / last.h).powi(4)))
+                .map(|&h| (h, e0 * (h / first.h).powi(4)))
                 .collect();
             plot = plot.with(
                 Series::line("reference slope 4 (C·h⁴)", reference, INK).styled(Style::Dashed),
             );
         }
+    }
+    // the rounding level, where some error reaches it: below it no order is measured
+    let reached = rows.iter().any(|r| {
+        r.errors
+            .max_abs
+            .iter()
+            .any(|e| *e > 0.0 && r.at_rounding(*e))
+    });
+    if rounding > 0.0 && reached && h_min.is_finite() {
+        let h_max = coarsest.map_or(h_min, |r| r.h);
+        plot = plot.with(
+            Series::line(
+                "rounding level (no order below it)",
+                vec![(h_min, rounding), (h_max, rounding)],
+                crate::report::plot2d::GREY,
+            )
+            .styled(Style::Dashed),
+        );
     }
     plot.legend_at(plotters::prelude::SeriesLabelPosition::UpperLeft)
         .figure()

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 pub enum Error {
     /// An error of the mathematics behind the output.
     #[error(transparent)]
-    Core(#[from] crate::error::Error),
+    Core(crate::error::Error),
     /// Reading or writing a file failed.
     #[error("{path}: {message}")]
     Io {
@@ -61,6 +61,32 @@ pub enum Error {
 impl std::fmt::Debug for Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         std::fmt::Display::fmt(self, f)
+    }
+}
+
+/// A mathematical error as a report error: the report error it carries if it is one
+/// ([`crate::error::Error::Layer`], so conversions never nest), else [`Error::Core`].
+impl From<crate::error::Error> for Error {
+    fn from(e: crate::error::Error) -> Error {
+        match e {
+            crate::error::Error::Layer(inner) => match inner.downcast_ref::<Error>() {
+                Some(mine) => mine.clone(),
+                None => Error::Core(crate::error::Error::Layer(inner)),
+            },
+            e => Error::Core(e),
+        }
+    }
+}
+
+/// A report error as a mathematical one, for `?` in a function returning
+/// [`crate::Result`]: the mathematical error itself if that is all it carries, else the
+/// report error kept whole in [`crate::error::Error::Layer`].
+impl From<Error> for crate::error::Error {
+    fn from(e: Error) -> crate::error::Error {
+        match e {
+            Error::Core(e) => e,
+            e => crate::error::Error::Layer(crate::error::LayerError::new(e)),
+        }
     }
 }
 

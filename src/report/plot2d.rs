@@ -429,6 +429,51 @@ pub(crate) fn axis_range(lo: f64, hi: f64, pad: f64) -> Option<(f64, f64)> {
 /// The extent of all finite points, padded by 5 % (and by ±1 for a degenerate side), each
 /// side drawable ([`axis_range`]); a fixed range replaces its side when it is valid.
 fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
+    let ((x0, x1), (y0, y1)) = data_extent(panel);
+    let side = |fixed: Option<(f64, f64)>, lo: f64, hi: f64, log: bool| {
+        fixed
+            .and_then(|(a, b)| if a < b { axis_range(a, b, 0.0) } else { None })
+            .or_else(|| if log { decades(lo, hi) } else { None })
+            .or_else(|| axis_range(lo, hi, 0.05))
+            .unwrap_or((0.0, 1.0))
+    };
+    (
+        side(panel.x_range, x0, x1, panel.log_x),
+        side(panel.y_range, y0, y1, panel.log_y),
+    )
+}
+
+/// A log axis (in `log₁₀` units) from `lo` to `hi`, widened down to a whole decade (and up
+/// to one too if only one power of ten would lie inside), with a small margin: its ticks
+/// are then powers of ten ([`decade_labels`]), at least two, never `0.0631` beside data at
+/// `0.0625`.
+fn decades(lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if !(lo.is_finite() && hi.is_finite()) || lo > hi {
+        return None;
+    }
+    let a = lo.floor();
+    let mut b = hi;
+    if hi.floor() - a < 1.0 {
+        b = (a + 1.0).max(hi.ceil());
+    }
+    let margin = 0.03 * (b - a);
+    Some((a - margin, b + margin))
+}
+
+/// How many tick labels a log axis over `(lo, hi)` (`log₁₀` units) asks of plotters: one per
+/// decade, so that the ticks it picks are whole powers of ten (every one, or every second,
+/// fifth… beyond a dozen decades).
+fn decade_labels((lo, hi): (f64, f64)) -> usize {
+    let n = hi.floor() - lo.ceil() + 1.0;
+    if n.is_finite() {
+        n.clamp(2.0, 12.0) as usize
+    } else {
+        7
+    }
+}
+
+/// The finite data's bounding box, `(x0, x1), (y0, y1)` (infinite when there is none).
+fn data_extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     let pts = panel.series.iter().flat_map(|s| s.points.iter());
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,
@@ -442,13 +487,7 @@ fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
         y0 = y0.min(y);
         y1 = y1.max(y);
     }
-    let side = |fixed: Option<(f64, f64)>, lo: f64, hi: f64| {
-        fixed
-            .and_then(|(a, b)| if a < b { axis_range(a, b, 0.0) } else { None })
-            .or_else(|| axis_range(lo, hi, 0.05))
-            .unwrap_or((0.0, 1.0))
-    };
-    (side(panel.x_range, x0, x1), side(panel.y_range, y0, y1))
+    ((x0, x1), (y0, y1))
 }
 
 /// The parts of the polyline `points` inside the box `[x0, x1] × [y0, y1]`, each segment
@@ -596,7 +635,12 @@ fn logged(panel: &Panel) -> Panel {
 /// tick within `10⁻⁹ span` of zero is the rounding of 0 and prints as 0.
 fn axis_label(log: bool, v: f64, span: f64) -> String {
     if log {
-        power_label(v)
+        // a log axis is labelled at powers of ten only (its range is whole decades)
+        if (v - v.round()).abs() <= 1e-9 {
+            power_label(v.round())
+        } else {
+            String::new()
+        }
     } else {
         let v = if v.abs() <= 1e-9 * span { 0.0 } else { v };
         let a = v.abs();
@@ -650,7 +694,11 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .caption(&panel.title, (FONT, LABEL_SIZE + 2))
         .margin(MARGIN)
         .x_label_area_size(X_LABEL_AREA)
-        .y_label_area_size(Y_LABEL_AREA)
+        .y_label_area_size(if panel.log_y {
+            Y_LABEL_AREA + 12
+        } else {
+            Y_LABEL_AREA
+        })
         .build_cartesian_2d(x0..x1, y0..y1)?;
     chart
         .configure_mesh()
@@ -660,8 +708,8 @@ fn draw_panel<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, panel: &Panel) 
         .label_style((FONT, TICK_SIZE))
         .light_line_style(RGBColor(235, 235, 235))
         .bold_line_style(RGBColor(215, 215, 215))
-        .x_labels(7)
-        .y_labels(7)
+        .x_labels(if panel.log_x { decade_labels(xs) } else { 7 })
+        .y_labels(if panel.log_y { decade_labels(ys) } else { 7 })
         .x_label_formatter(&|v| axis_label(panel.log_x, *v, x1 - x0))
         .y_label_formatter(&|v| axis_label(panel.log_y, *v, y1 - y0))
         .draw()?;
@@ -804,5 +852,35 @@ mod tests {
         assert_eq!(axis_label(false, 0.2, 1.3), "0.2");
         // a genuinely small axis keeps its small ticks
         assert_eq!(axis_label(false, 2e-12, 1e-11), "2.0e-12");
+    }
+}
+
+#[cfg(test)]
+mod log_axis_tests {
+    use super::*;
+
+    #[test]
+    fn log_axes_span_whole_decades_and_ask_for_one_label_per_decade() {
+        // h from 1/16 to 2: down to a whole decade (0.01), up to the data (2): 0.01, 0.1, 1
+        let (lo, hi) = (0.0625f64.log10(), 2f64.log10());
+        let (a, b) = decades(lo, hi).unwrap();
+        assert!(a < -2.0 && a > -2.1 && b > hi && b < 0.4, "{a} {b}");
+        assert_eq!(decade_labels((a, b)), 3);
+        // errors from 1e-6 to 0.06: whole decades below, the data's top above
+        let (a, b) = decades(1e-6f64.log10(), 0.06f64.log10()).unwrap();
+        assert!((a + 6.0).abs() < 0.2 && b < -1.0, "{a} {b}");
+        assert_eq!(decade_labels((a, b)), 5);
+        // within one decade: both neighbouring powers of ten
+        let (a, b) = decades(0.2f64.log10(), 0.5f64.log10()).unwrap();
+        assert!(a < -1.0 && b > 0.0);
+        // degenerate input is not a range, and never overflows
+        assert_eq!(decades(f64::NAN, 1.0), None);
+        assert_eq!(decades(2.0, 1.0), None);
+        assert_eq!(decade_labels((f64::NEG_INFINITY, 3.0)), 7);
+        assert_eq!(decade_labels((-400.0, 400.0)), 12);
+        // labels only at powers of ten
+        assert_eq!(axis_label(true, -2.0, 3.0), "0.01");
+        assert_eq!(axis_label(true, -12.0, 3.0), "1e-12");
+        assert_eq!(axis_label(true, -1.5, 3.0), "");
     }
 }

@@ -485,6 +485,18 @@ fn draw_axes<DB: DrawingBackend>(
     chart: &mut Chart3d<'_, DB>,
     b: &PaddedBox,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    // The labelled edges of our x and y meet at a corner of the box; a label of x close to
+    // either end of its range could print on top of y's label there (two "4.0" at one
+    // corner), so x's labels keep clear of its ends.
+    let (x_lo, x_hi) = (b.lo.x, b.hi.x);
+    let clear = 0.12 * (x_hi - x_lo);
+    let x_label = move |v: &f64| {
+        if (v - x_lo).abs() < clear || (x_hi - v).abs() < clear {
+            String::new()
+        } else {
+            format!("{v:.1}")
+        }
+    };
     chart
         .configure_axes()
         .light_grid_style(BLACK.mix(0.08))
@@ -495,7 +507,7 @@ fn draw_axes<DB: DrawingBackend>(
         .label_style((FONT, TICK_SIZE))
         .x_formatter(&|v| format!("{v:.1}"))
         .y_formatter(&|v| format!("{v:.1}"))
-        .z_formatter(&|v| format!("{v:.1}"))
+        .z_formatter(&x_label)
         .draw()?;
     // positions in plotters' coordinates
     let label = (FONT, LABEL_SIZE + 4).into_font().color(&BLACK);

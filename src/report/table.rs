@@ -259,8 +259,8 @@ pub fn tabulation<S: SurfaceDerivatives + Sync + ?Sized>(
     ns: usize,
     nt: usize,
 ) -> Result<Table> {
-    let s = rect.s.linspace(ns)?;
-    let t = rect.t.linspace(nt)?;
+    let s = rect.s.linspace_named("ns", ns)?;
+    let t = rect.t.linspace_named("nt", nt)?;
     let grid = partials_on_grid(surface, &s, &t)?;
     let mut columns = vec![
         Column::new(
@@ -373,9 +373,30 @@ pub fn convergence(id: &str, title: &str, rows: &[ConvergenceRow]) -> Result<Tab
             std::mem::take(&mut orders[q]),
         ));
     }
-    Ok(Table::new(id, title, frame(id, columns)?)
-        .note("order_*: log(e_prev/e)/log(h_prev/h) against the previous row; bicubic Hermite interpolation converges as h⁴ (— where an error is zero or the previous row is missing).")
-        .note("report_norm is the report's measure (mean over patches of per-patch matrix 2-norms)."))
+    let mut table = Table::new(id, title, frame(id, columns)?)
+        .note("order_*: log(e_prev/e)/log(h_prev/h) against the previous row; bicubic Hermite interpolation converges as h⁴ (— on the first row, and where an error is at rounding level).")
+        .note("report_norm is the report's measure (mean over patches of per-patch matrix 2-norms).");
+    let at_rounding: Vec<String> = COORDS
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| rows.iter().any(|r| r.at_rounding(r.errors.max_abs[k])))
+        .map(|(_, axis)| (*axis).to_string())
+        .collect();
+    if let Some(level) = rows.first().map(|r| r.rounding) {
+        if !at_rounding.is_empty() {
+            let (which, reach) = if at_rounding.len() == 1 {
+                ("Coordinate", "reaches")
+            } else {
+                ("Coordinates", "reach")
+            };
+            table = table.note(format!(
+                "{which} {} {reach} the rounding level {} (128 ε × the surface's largest coordinate): there the error is the rounding of f64 (the spline reproduces it), and no order is computed from it.",
+                at_rounding.join(", "),
+                crate::printed::rounded(level, 2)
+            ));
+        }
+    }
+    Ok(table)
 }
 
 /// The continuity of a spline surface across its seams: for every interior node `uᵢ` (and

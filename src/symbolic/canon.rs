@@ -26,6 +26,7 @@
 //! Products of sums are *not* multiplied out unless asked ([`Sum::expanded`]), so the
 //! Bernstein polynomial `3t(1 − t)²` stays as the report prints it.
 
+use super::coef::Coef;
 use super::expr::FastMap;
 use super::expr::Func;
 use std::rc::Rc;
@@ -63,7 +64,7 @@ pub enum Atom {
 #[derive(Debug, Clone)]
 pub struct Term {
     /// The coefficient.
-    pub coef: f64,
+    pub coef: Coef,
     /// Bases and their exponents (never `0`), no base twice.
     pub factors: Vec<(Rc<Atom>, f64)>,
 }
@@ -83,7 +84,7 @@ pub struct Sum {
 /// (`x·y = y·x`).
 impl PartialEq for Term {
     fn eq(&self, other: &Term) -> bool {
-        self.coef.to_bits() == other.coef.to_bits() && self.like(other)
+        self.coef.value().to_bits() == other.coef.value().to_bits() && self.like(other)
     }
 }
 
@@ -250,7 +251,7 @@ pub(crate) fn power(x: f64, e: f64) -> f64 {
 }
 
 impl Term {
-    pub(crate) fn constant(c: f64) -> Term {
+    pub(crate) fn constant(c: Coef) -> Term {
         Term {
             coef: c,
             factors: Vec::new(),
@@ -290,7 +291,7 @@ impl Term {
     fn eval(&self, values: &[f64]) -> f64 {
         self.factors
             .iter()
-            .fold(self.coef, |p, (a, e)| p * power(a.eval(values), *e))
+            .fold(self.coef.value(), |p, (a, e)| p * power(a.eval(values), *e))
     }
 
     /// The term's value and rounding bound (units of `ε`): the factors' errors carried by
@@ -298,7 +299,7 @@ impl Term {
     fn eval_bound(&self, values: &[f64]) -> (f64, f64) {
         // Σⱼ dⱼ Πₖ≠ⱼ |vₖ| in one pass: the product of the non-zero |vₖ|, and the carried sum
         // Σ dⱼ / |vⱼ| over the non-zero factors (or the one zero factor's dⱼ)
-        let (mut value, mut product, mut ratio) = (self.coef, 1.0f64, 0.0f64);
+        let (mut value, mut product, mut ratio) = (self.coef.value(), 1.0f64, 0.0f64);
         let (mut zeros, mut zero_d) = (0usize, 0.0f64);
         for (a, e) in &self.factors {
             let (x, ex) = a.eval_bound(values);
@@ -323,7 +324,7 @@ impl Term {
             _ => 0.0,
         };
         let n = self.factors.len();
-        let bound = self.coef.abs() * carried + (n as f64 + 2.0) * value.abs();
+        let bound = self.coef.value().abs() * carried + (n as f64 + 2.0) * value.abs();
         (value, bound)
     }
 
@@ -344,7 +345,7 @@ impl Term {
             }
         }
         Term {
-            coef: self.coef * other.coef,
+            coef: self.coef.mul(other.coef),
             factors,
         }
     }
@@ -359,7 +360,7 @@ impl Sum {
         let size = terms.iter().fold(1usize, |n, t| n.saturating_add(t.size()));
         let depth = terms.iter().map(Term::depth).max().unwrap_or(0);
         let hash = terms.iter().fold(7u64, |h, t| {
-            h.wrapping_add(mix2(t.monomial_hash(), t.coef.to_bits()))
+            h.wrapping_add(mix2(t.monomial_hash(), t.coef.value().to_bits()))
         });
         Sum {
             terms,
@@ -371,7 +372,12 @@ impl Sum {
 
     /// The constant `c`.
     pub fn num(c: f64) -> Sum {
-        if c == 0.0 {
+        Sum::constant(Coef::of(c))
+    }
+
+    /// The constant `c`, a coefficient.
+    pub(crate) fn constant(c: Coef) -> Sum {
+        if c.is_zero() {
             Sum::from_terms(Vec::new())
         } else {
             Sum::from_terms(vec![Term::constant(c)])
@@ -381,14 +387,14 @@ impl Sum {
     /// The atom alone.
     pub fn atom(a: Atom) -> Sum {
         Sum::from_terms(vec![Term {
-            coef: 1.0,
+            coef: Coef::ONE,
             factors: vec![(Rc::new(a), 1.0)],
         }])
     }
 
     /// A term as a sum: a term that is only `c·(a + b)` becomes `c·a + c·b`.
     pub(crate) fn from_term(t: Term) -> Sum {
-        if t.coef == 0.0 {
+        if t.coef.is_zero() {
             return Sum::num(0.0);
         }
         if let [(a, e)] = t.factors.as_slice() {
@@ -404,7 +410,7 @@ impl Sum {
     /// `≥ 0`, and then `≥ 0`) or a [nonnegative](Atom::nonnegative) atom (`1 + t²`, `eˢ·√x`).
     pub fn nonnegative(&self) -> bool {
         self.terms.iter().all(|t| {
-            t.coef >= 0.0
+            t.coef.value() >= 0.0
                 && t.factors.iter().all(|(a, e)| {
                     (e.fract() == 0.0 && e % 2.0 == 0.0) || e.fract() != 0.0 || a.nonnegative()
                 })
@@ -438,8 +444,13 @@ impl Sum {
 
     /// The constant this sum is, if it is one.
     pub fn as_constant(&self) -> Option<f64> {
+        self.as_coef().map(Coef::value)
+    }
+
+    /// The constant this sum is, as a coefficient, if it is one.
+    pub(crate) fn as_coef(&self) -> Option<Coef> {
         match self.terms.as_slice() {
-            [] => Some(0.0),
+            [] => Some(Coef::of(0.0)),
             [t] if t.factors.is_empty() => Some(t.coef),
             _ => None,
         }
@@ -465,18 +476,18 @@ impl Sum {
         (value, bound + self.terms.len() as f64 * size)
     }
 
-    fn scale(&self, c: f64) -> Sum {
-        if c == 1.0 {
+    fn scale(&self, c: Coef) -> Sum {
+        if c.value() == 1.0 {
             return self.clone();
         }
         Sum::from_terms(
             self.terms
                 .iter()
                 .map(|t| Term {
-                    coef: t.coef * c,
+                    coef: t.coef.mul(c),
                     factors: t.factors.clone(),
                 })
-                .filter(|t| t.coef != 0.0)
+                .filter(|t| !t.coef.is_zero())
                 .collect(),
         )
     }
@@ -501,14 +512,14 @@ impl Sum {
         for t in terms {
             let slot = index.entry(t.monomial_hash()).or_default();
             match slot.iter().copied().find(|&k| out[k].like(&t)) {
-                Some(k) => out[k].coef += t.coef,
+                Some(k) => out[k].coef = out[k].coef.add(t.coef),
                 None => {
                     slot.push(out.len());
                     out.push(t);
                 }
             }
         }
-        out.retain(|t| t.coef != 0.0);
+        out.retain(|t| !t.coef.is_zero());
         if let Some(fewer) = pythagoras(&out) {
             // an identity merged two terms: the result may be like another term
             return Sum::collect(fewer.into_iter());
@@ -537,12 +548,12 @@ impl Sum {
         let mut inner = Sum::num(0.0);
         for t in &self.terms {
             let t = quotients(t);
-            let mut product = Sum::num(t.coef);
+            let mut product = Sum::constant(t.coef);
             for (a, e) in &t.factors {
                 let factor = match a.combined() {
                     Atom::Group(g) => Sum::powf(&g, *e),
                     other => Sum::from_term(Term {
-                        coef: 1.0,
+                        coef: Coef::ONE,
                         factors: vec![(Rc::new(other), *e)],
                     }),
                 };
@@ -586,7 +597,7 @@ impl Sum {
                 continue;
             }
             let lift = Term {
-                coef: 1.0,
+                coef: Coef::ONE,
                 factors: vec![(d.clone(), k)],
             };
             let lifted = inner.terms.iter().map(|t| Sum::from_term(t.times(&lift)));
@@ -604,7 +615,7 @@ impl Sum {
                 }
             }
             let over = Term {
-                coef: 1.0,
+                coef: Coef::ONE,
                 factors: vec![(d.clone(), -k)],
             };
             let candidate = Sum::mul(&numerator, &Sum::from_term(over));
@@ -637,30 +648,45 @@ impl Sum {
     /// Whether [`Sum::snapped`] would change anything (a read-only scan: most formulas have
     /// nothing to clean, and rebuilding them costs more than looking).
     pub(crate) fn needs_snap(&self, floor: f64) -> bool {
-        if self.terms.iter().any(|t| !t.coef.is_finite()) {
+        if self.terms.iter().any(|t| !t.coef.value().is_finite()) {
             return false;
         }
-        let largest = self.terms.iter().map(|t| t.coef.abs()).fold(0.0, f64::max);
+        let largest = self
+            .terms
+            .iter()
+            .map(|t| t.coef.value().abs())
+            .fold(0.0, f64::max);
         self.terms.iter().any(|t| {
-            snap(t.coef) != t.coef
-                || (self.terms.len() > 1 && t.coef.abs() <= RESIDUE * largest)
-                || (self.terms.len() == 1 && t.factors.is_empty() && t.coef.abs() <= floor)
+            let c = t.coef.value();
+            (!t.coef.is_exact() && snap(c) != c)
+                || (self.terms.len() > 1 && c.abs() <= RESIDUE * largest)
+                || (self.terms.len() == 1 && t.factors.is_empty() && c.abs() <= floor)
                 || t.factors.iter().any(|(a, _)| a.needs_snap())
         })
     }
 
     pub(crate) fn snapped(&self, floor: f64) -> Sum {
-        if self.terms.iter().any(|t| !t.coef.is_finite()) {
+        if self.terms.iter().any(|t| !t.coef.value().is_finite()) {
             return self.clone();
         }
-        let largest = self.terms.iter().map(|t| t.coef.abs()).fold(0.0, f64::max);
+        let largest = self
+            .terms
+            .iter()
+            .map(|t| t.coef.value().abs())
+            .fold(0.0, f64::max);
         let terms: Vec<Term> = self
             .terms
             .iter()
-            .filter(|t| self.terms.len() == 1 || t.coef.abs() > RESIDUE * largest)
-            .filter(|t| self.terms.len() > 1 || !t.factors.is_empty() || t.coef.abs() > floor)
+            .filter(|t| self.terms.len() == 1 || t.coef.value().abs() > RESIDUE * largest)
+            .filter(|t| {
+                self.terms.len() > 1 || !t.factors.is_empty() || t.coef.value().abs() > floor
+            })
             .map(|t| Term {
-                coef: snap(t.coef),
+                coef: if t.coef.is_exact() {
+                    t.coef
+                } else {
+                    Coef::of(snap(t.coef.value()))
+                },
                 factors: t
                     .factors
                     .iter()
@@ -673,21 +699,21 @@ impl Sum {
 
     /// `−a`.
     pub fn neg(a: &Sum) -> Sum {
-        a.scale(-1.0)
+        a.scale(Coef::of(-1.0))
     }
 
     /// This sum as one term: itself if it has one term, else a group (its sign out when every
     /// term is negative).
     fn as_term(&self) -> Term {
         match self.terms.as_slice() {
-            [] => Term::constant(0.0),
+            [] => Term::constant(Coef::of(0.0)),
             [t] => t.clone(),
             terms => {
-                let sign = if terms.iter().all(|t| t.coef < 0.0) {
+                let sign = Coef::of(if terms.iter().all(|t| t.coef.value() < 0.0) {
                     -1.0
                 } else {
                     1.0
-                };
+                });
                 Term {
                     coef: sign,
                     factors: vec![(Rc::new(Atom::Group(self.scale(sign))), 1.0)],
@@ -698,7 +724,7 @@ impl Sum {
 
     /// `a · b`: constants multiply into sums, other sums are kept whole.
     pub fn mul(a: &Sum, b: &Sum) -> Sum {
-        match (a.as_constant(), b.as_constant()) {
+        match (a.as_coef(), b.as_coef()) {
             (Some(x), _) => b.scale(x),
             (_, Some(y)) => a.scale(y),
             _ => Sum::from_term(a.as_term().times(&b.as_term())),
@@ -712,8 +738,8 @@ impl Sum {
             1 => return a.clone(),
             _ => {}
         }
-        if let Some(c) = a.as_constant() {
-            return Sum::num(c.powi(n));
+        if let Some(c) = a.as_coef() {
+            return Sum::constant(c.powi(n));
         }
         let t = a.as_term();
         let e = f64::from(n);
@@ -739,15 +765,17 @@ impl Sum {
             // both sides are undefined for x < 0: √(1/x) = x^(−1/2))
             let odd = |e: f64| e.fract() == 0.0 && e % 2.0 != 0.0;
             let single_odd = matches!(t.factors.as_slice(), [(_, e)] if odd(*e));
-            if t.coef > 0.0 && (single_odd || t.factors.iter().all(|(a, _)| a.nonnegative())) {
+            if t.coef.value() > 0.0
+                && (single_odd || t.factors.iter().all(|(a, _)| a.nonnegative()))
+            {
                 return Sum::from_term(Term {
-                    coef: t.coef.powf(p),
+                    coef: Coef::of(t.coef.value().powf(p)),
                     factors: t.factors.iter().map(|(b, e)| (b.clone(), e * p)).collect(),
                 });
             }
         }
         Sum::from_term(Term {
-            coef: 1.0,
+            coef: Coef::ONE,
             factors: vec![(Rc::new(Atom::Group(a.clone())), p)],
         })
     }
@@ -785,7 +813,7 @@ impl Sum {
     pub fn expanded(&self) -> Option<Sum> {
         let mut all: Vec<Term> = Vec::new();
         for t in &self.terms {
-            let mut product = Sum::num(t.coef);
+            let mut product = Sum::constant(t.coef);
             for (a, e) in &t.factors {
                 let inner = a.expanded()?;
                 let factor = match (&inner, *e) {
@@ -803,7 +831,7 @@ impl Sum {
                     }
                     (Atom::Group(s), e) => Sum::powf(s, e),
                     (atom, e) => Sum::from_term(Term {
-                        coef: 1.0,
+                        coef: Coef::ONE,
                         factors: vec![(Rc::new(atom.clone()), e)],
                     }),
                 };
@@ -886,7 +914,7 @@ impl Sum {
             return None;
         }
         let over = Term {
-            coef: 1.0,
+            coef: Coef::ONE,
             factors: vec![(d.clone(), -highest)],
         };
         Some(Sum::mul(&numerator, &Sum::from_term(over)))
@@ -1021,7 +1049,7 @@ fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
             let Some((h, _, v)) = square(&terms[j], l) else {
                 continue;
             };
-            if h != g || v != u || terms[j].coef != ratio * terms[i].coef {
+            if h != g || v != u || terms[j].coef.value() != ratio * terms[i].coef.value() {
                 continue;
             }
             let rj = rest(&terms[j], l);
@@ -1031,7 +1059,7 @@ fn pythagoras(terms: &[Term]) -> Option<Vec<Term>> {
             // sin² and cos² (or cosh² and −sinh²): the pair is the rest times the first's
             // coefficient; for sinh² first (c·sinh² − c·cosh²) it is −c
             let coef = if f == Func::Sinh {
-                -terms[i].coef
+                terms[i].coef.neg()
             } else {
                 terms[i].coef
             };

@@ -7,9 +7,11 @@ use super::print::{escape, Formula};
 use crate::exact::{Polynomial, Rational, Written};
 use nalgebra::Matrix4;
 
-/// One cell of mathematics, in LaTeX and in presentation MathML.
+/// One cell of mathematics, in plain text, in LaTeX and in presentation MathML.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Math {
+    /// Plain text, as a terminal shows it (`-sin(s)*(2 + cos(t))`, `X_st`).
+    pub plain: String,
     /// LaTeX (math mode).
     pub latex: String,
     /// MathML (the contents of a `<math>` element).
@@ -19,6 +21,7 @@ pub struct Math {
 impl From<&Formula> for Math {
     fn from(f: &Formula) -> Math {
         Math {
+            plain: f.plain(),
             latex: f.latex(),
             mathml: f.mathml(),
         }
@@ -29,6 +32,7 @@ impl Math {
     /// Text set upright (a label, a heading).
     pub fn text(s: &str) -> Math {
         Math {
+            plain: s.to_string(),
             latex: if s.is_empty() {
                 String::new()
             } else {
@@ -42,11 +46,13 @@ impl Math {
     pub fn symbol(name: &str, sub: &str) -> Math {
         if sub.is_empty() {
             return Math {
+                plain: name.into(),
                 latex: name.into(),
                 mathml: format!("<mi>{}</mi>", escape(name)),
             };
         }
         Math {
+            plain: format!("{name}_{sub}"),
             latex: format!("{name}_{{{sub}}}"),
             mathml: format!(
                 "<msub><mi>{}</mi><mi>{}</mi></msub>",
@@ -56,11 +62,21 @@ impl Math {
         }
     }
 
-    /// A numeric 4 × 4 matrix (6 significant digits).
+    /// A numeric 4 × 4 matrix: its entries as fractions (`29/81`) if every one is a fraction
+    /// within rounding (read as formulas read their constants), else to 6 significant digits.
     pub fn matrix(m: &Matrix4<f64>) -> Math {
+        let scale = m.iter().fold(0.0f64, |s, x| s.max(x.abs()));
+        // fractions only if every entry is one (as formulas read their constants)
+        let read = m.iter().all(|x| super::coef::Coef::readable(*x, scale));
         let cell = |x: f64| -> String {
             if x == 0.0 {
                 "0".into()
+            } else if let Some((p, q)) = read
+                .then(|| super::coef::Coef::read(x, scale).fraction())
+                .flatten()
+                .filter(|&(_, q)| q > 1)
+            {
+                format!("{p}/{q}")
             } else {
                 let s = format!("{x:.6}");
                 let s = format!("{}", s.parse::<f64>().unwrap_or(x));
@@ -70,6 +86,13 @@ impl Math {
         let rows: Vec<Vec<String>> = (0..4)
             .map(|i| (0..4).map(|j| cell(m[(i, j)])).collect())
             .collect();
+        let plain = format!(
+            "[{}]",
+            rows.iter()
+                .map(|r| r.join(", "))
+                .collect::<Vec<_>>()
+                .join("; ")
+        );
         let latex = crate::printed::latex_matrix(&rows);
         let mathml_cells: Vec<Vec<String>> = rows
             .iter()
@@ -83,7 +106,11 @@ impl Math {
             })
             .collect();
         let mathml = crate::printed::mathml_matrix(&mathml_cells);
-        Math { latex, mathml }
+        Math {
+            plain,
+            latex,
+            mathml,
+        }
     }
 }
 
@@ -98,6 +125,7 @@ impl MathTable {
                 .enumerate()
                 .map(|(i, f)| {
                     let label = Math {
+                        plain: format!("{name}_{i}({var}) ="),
                         latex: format!("{name}_{{{i}}}({var}) ="),
                         mathml: format!(
                             "<msub><mi>{}</mi><mn>{i}</mn></msub><mo>(</mo><mi>{}</mi><mo>)</mo><mo>=</mo>",
@@ -126,6 +154,49 @@ pub struct MathTable {
 }
 
 impl MathTable {
+    /// Plain text, as a terminal shows it: the columns aligned, two spaces apart, a rule
+    /// under the header, the notes under the table.
+    pub fn plain(&self) -> String {
+        let mut lines: Vec<Vec<&str>> = Vec::new();
+        if !self.header.is_empty() {
+            lines.push(self.header.iter().map(|m| m.plain.as_str()).collect());
+        }
+        lines.extend(
+            self.rows
+                .iter()
+                .map(|r| r.iter().map(|m| m.plain.as_str()).collect()),
+        );
+        let columns = lines.iter().map(Vec::len).max().unwrap_or(0);
+        let widths: Vec<usize> = (0..columns)
+            .map(|k| {
+                lines
+                    .iter()
+                    .filter_map(|l| l.get(k))
+                    .map(|c| c.chars().count())
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        let line = |cells: &[&str]| -> String {
+            let padded: Vec<String> = cells
+                .iter()
+                .enumerate()
+                .map(|(k, c)| format!("{c:<w$}", w = widths[k]))
+                .collect();
+            padded.join("  ").trim_end().to_string()
+        };
+        let mut out: Vec<String> = Vec::new();
+        for (i, cells) in lines.iter().enumerate() {
+            out.push(line(cells));
+            if i == 0 && !self.header.is_empty() {
+                let total = widths.iter().sum::<usize>() + 2 * columns.saturating_sub(1);
+                out.push("-".repeat(total));
+            }
+        }
+        out.extend(self.notes.iter().cloned());
+        out.join("\n")
+    }
+
     /// LaTeX: an `array` (for `$$ … $$`), the notes as `\text` lines under it.
     pub fn latex(&self) -> String {
         let columns = self
@@ -242,6 +313,7 @@ impl Math {
     pub fn name(name: &str) -> Math {
         let chars: Vec<char> = name.chars().collect();
         Math {
+            plain: name_plain(name),
             latex: name.to_string(),
             mathml: name_mathml(&chars),
         }
@@ -250,6 +322,7 @@ impl Math {
     /// A polynomial with exact coefficients in the variable `var`.
     pub fn polynomial(p: &Polynomial<Rational>, var: &str) -> Math {
         Math {
+            plain: p.plain(var),
             latex: p.latex(var),
             mathml: p.mathml(var),
         }
@@ -264,10 +337,44 @@ impl Math {
 impl<W: Written> From<&W> for Math {
     fn from(x: &W) -> Math {
         Math {
+            plain: x.plain(),
             latex: x.latex(),
             mathml: x.mathml(),
         }
     }
+}
+
+/// A LaTeX name as plain text: Greek commands as their letters, other commands without the
+/// backslash, braces dropped (`\lambda_k(H_j)` → `λ_k(H_j)`, `K^{-1}` → `K^-1`).
+fn name_plain(name: &str) -> String {
+    let mut out = String::new();
+    let mut rest = name;
+    while let Some(c) = rest.chars().next() {
+        if c == '\\' {
+            let word: String = rest[1..]
+                .chars()
+                .take_while(|c| c.is_ascii_alphabetic())
+                .collect();
+            match GREEK.iter().find(|(n, _)| *n == word) {
+                Some((_, letter)) => out.push(*letter),
+                None => out.push_str(&word),
+            }
+            rest = &rest[1 + word.len()..];
+            if word.is_empty() {
+                // an escaped symbol (`\,`): the symbol itself
+                if let Some(next) = rest.chars().next() {
+                    out.push(next);
+                    rest = &rest[next.len_utf8()..];
+                }
+            }
+            continue;
+        }
+        if c != '{' && c != '}' {
+            out.push(c);
+        }
+        rest = &rest[c.len_utf8()..];
+    }
+    out
 }
 
 /// The Greek letters a name may write as commands, by their LaTeX names.
@@ -432,6 +539,13 @@ impl MathTable {
     pub fn note(mut self, text: &str) -> MathTable {
         self.notes.push(text.to_string());
         self
+    }
+}
+
+/// [`MathTable::plain`].
+impl std::fmt::Display for MathTable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.plain())
     }
 }
 

@@ -31,6 +31,19 @@ pub struct Traced {
     pub pointwise: bool,
 }
 
+/// One formula per line (`plain` text), then where they hold.
+impl std::fmt::Display for Traced {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let lines: Vec<String> = self
+            .formulas
+            .iter()
+            .map(Formula::plain)
+            .chain(holds_where(&self.branches))
+            .collect();
+        f.write_str(&lines.join("\n"))
+    }
+}
+
 /// Traces `f` at the variables `vars` (`(name, value)`): `f` runs once on [`Expr`] values,
 /// and whatever it returns comes back as formulas.
 ///
@@ -48,9 +61,17 @@ pub fn trace<const K: usize>(
     vars: [(&str, f64); K],
     f: impl FnOnce([Expr; K]) -> Vec<Expr>,
 ) -> Result<Traced> {
+    trace_vars(&vars, |x| f(std::array::from_fn(|k| x[k])))
+}
+
+/// [`trace`] for a number of variables known only at run time.
+fn trace_vars(vars: &[(&str, f64)], f: impl FnOnce(&[Expr]) -> Vec<Expr>) -> Result<Traced> {
     let mut trace = Trace::new();
-    let x = vars.map(|(name, value)| trace.var(name, value));
-    let values = f(x);
+    let x: Vec<Expr> = vars
+        .iter()
+        .map(|&(name, value)| trace.var(name, value))
+        .collect();
+    let values = f(&x);
     let formulas = trace.formulas(&values)?;
     let pieces = trace.pieces();
     let reads = trace.unrecorded_reads();
@@ -90,6 +111,16 @@ pub struct SurfaceFormulas {
     /// Where the formulas hold: the piece of a piecewise surface (`s ∈ [1/4, 1/2)`), then the
     /// branches the evaluation took. Empty: everywhere the evaluation is defined.
     pub branches: Vec<String>,
+    /// The parameters the formulas name as symbols, with the values they were checked at
+    /// ([`surface_formulas_with_parameters`]; empty for [`surface_formulas`]).
+    pub parameters: Vec<(String, f64)>,
+}
+
+/// The plain-text table a terminal shows ([`MathTable::plain`] of the `table()`).
+impl std::fmt::Display for SurfaceFormulas {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.table(), f)
+    }
 }
 
 impl SurfaceFormulas {
@@ -111,7 +142,18 @@ impl SurfaceFormulas {
                     row
                 })
                 .collect(),
-            notes: holds_where(&self.branches),
+            notes: {
+                let mut notes = holds_where(&self.branches);
+                if !self.parameters.is_empty() {
+                    let values: Vec<String> = self
+                        .parameters
+                        .iter()
+                        .map(|(name, value)| format!("{name} = {}", super::number(*value)))
+                        .collect();
+                    notes.push(format!("Checked at {}.", values.join(", ")));
+                }
+                notes
+            },
         }
     }
 
@@ -142,14 +184,80 @@ pub fn surface_formulas<S: ParametricSurface + ?Sized>(
     s: f64,
     t: f64,
 ) -> Result<SurfaceFormulas> {
+    traced_surface(surface, s, t, false)
+}
+
+/// [`surface_formulas`] with the surface's parameters ([`ParametricSurface::parameters`]) as
+/// symbols: the torus as `cos(s)*(R + r*cos(t))`, a [`crate::surface!`] with fields by its
+/// fields' names. The parameters keep their values for the capture check, so each formula
+/// is checked at the surface's own values. A surface without parameters gives what
+/// [`surface_formulas`] gives.
+///
+/// ```
+/// use splinelab::symbolic::surface_formulas_with_parameters;
+/// use splinelab::Torus;
+/// let f = surface_formulas_with_parameters(&Torus::default(), 0.3, 0.7)?;
+/// assert_eq!(f.point[0].plain(), "cos(s)*(R + r*cos(t))");
+/// assert_eq!(f.dst[2].plain(), "0");
+/// assert_eq!(f.parameters, vec![("R".to_string(), 2.0), ("r".to_string(), 1.0)]);
+/// # Ok::<(), splinelab::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`surface_formulas`]; [`Error::Degenerate`] for a parameter named `s` or `t`, or two
+/// parameters of one name; [`Error::NonFinite`] for a parameter that is NaN or infinite.
+pub fn surface_formulas_with_parameters<S: ParametricSurface + ?Sized>(
+    surface: &S,
+    s: f64,
+    t: f64,
+) -> Result<SurfaceFormulas> {
+    traced_surface(surface, s, t, true)
+}
+
+/// The surface's formulas, its parameters as symbols or as numbers.
+fn traced_surface<S: ParametricSurface + ?Sized>(
+    surface: &S,
+    s: f64,
+    t: f64,
+    symbols: bool,
+) -> Result<SurfaceFormulas> {
     crate::error::finite("trace point s", s)?;
     crate::error::finite("trace point t", t)?;
-    let traced = trace([("s", s), ("t", t)], |[sv, tv]| {
+    let parameters = if symbols {
+        surface.parameters()
+    } else {
+        Vec::new()
+    };
+    for (k, &(name, value)) in parameters.iter().enumerate() {
+        crate::error::finite("surface parameter", value)?;
+        if ["s", "t"].contains(&name) || parameters[..k].iter().any(|p| p.0 == name) {
+            return Err(Error::Degenerate {
+                what: "surface parameters",
+                reason: "a parameter is named s or t, or two parameters have one name: the formulas could not tell them apart",
+            });
+        }
+    }
+    let mut vars = vec![("s", s), ("t", t)];
+    vars.extend(parameters.iter().copied());
+    let traced = trace_vars(&vars, |x| {
         let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
-        let x = surface.eval(
-            HyperDual::new(sv, one, zero, zero),
-            HyperDual::new(tv, zero, one, zero),
-        );
+        let (sv, tv) = (x[0], x[1]);
+        let x = if symbols {
+            let given: Vec<HyperDual<Expr>> = x[2..]
+                .iter()
+                .map(|&p| HyperDual::new(p, zero, zero, zero))
+                .collect();
+            surface.eval_with(
+                HyperDual::new(sv, one, zero, zero),
+                HyperDual::new(tv, zero, one, zero),
+                &given,
+            )
+        } else {
+            surface.eval(
+                HyperDual::new(sv, one, zero, zero),
+                HyperDual::new(tv, zero, one, zero),
+            )
+        };
         let mut out = Vec::with_capacity(12);
         let parts: [fn(&HyperDual<Expr>) -> Expr; 4] =
             [|d| d.re, |d| d.eps1, |d| d.eps2, |d| d.eps1eps2];
@@ -167,6 +275,10 @@ pub fn surface_formulas<S: ParametricSurface + ?Sized>(
         dt: three(6),
         dst: three(9),
         branches,
+        parameters: parameters
+            .into_iter()
+            .map(|(name, value)| (name.to_string(), value))
+            .collect(),
     })
 }
 
@@ -188,6 +300,13 @@ pub struct CurveFormulas {
     /// `Some(tᵢ)` when the formulas are written in the piece's local variable `u = t − tᵢ`
     /// ([`curve_formulas_local`]); `None` for the global `t` ([`curve_formulas`]).
     pub origin: Option<f64>,
+}
+
+/// The plain-text table a terminal shows ([`MathTable::plain`] of the `table()`).
+impl std::fmt::Display for CurveFormulas {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.table(), f)
+    }
 }
 
 impl CurveFormulas {
@@ -398,6 +517,13 @@ pub struct BasisFormulas {
     pub span: Span,
 }
 
+/// The plain-text table a terminal shows ([`MathTable::plain`] of the `table()`).
+impl std::fmt::Display for BasisFormulas {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.table(), f)
+    }
+}
+
 impl BasisFormulas {
     /// One row per function, the span as a note.
     pub fn table(&self) -> MathTable {
@@ -467,6 +593,13 @@ pub struct PatchFormulas {
     pub c: [Matrix4<f64>; 3],
     /// `X(s, t)` by coordinate, multiplied out in powers of `s` and `t` (local parameters).
     pub x: [Formula; 3],
+}
+
+/// The plain-text table a terminal shows ([`MathTable::plain`] of the `table()`).
+impl std::fmt::Display for PatchFormulas {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.table(), f)
+    }
 }
 
 impl PatchFormulas {

@@ -15,11 +15,23 @@
 //! ```
 //!
 //! **The API.** [`surface_formulas`] (any [`crate::surface::ParametricSurface`]: `X`, `X_s`, `X_t`,
-//! `X_st`), [`curve_formulas`] (any [`crate::curve::ParametricCurve`]: `C`, `C′`, `C″` on the piece of
+//! `X_st`), [`surface_formulas_with_parameters`] (the same with the surface's parameters as
+//! symbols: `cos(s)*(R + r*cos(t))`), [`curve_formulas`] (any [`crate::curve::ParametricCurve`]: `C`, `C′`, `C″` on the piece of
 //! `t`), [`hermite_basis_formulas`], [`bernstein_formulas`], [`bspline_basis_formulas`] (on a
 //! knot span), [`patch_formulas`] (`H(s)ᵀ C H(t)`), and [`trace`] for any generic code of
 //! one's own; [`crate::surface!`] writes a user surface once for numbers and formulas. Each
-//! result has a [`MathTable`] (`table()`) that a notebook shows as rendered mathematics.
+//! result has a [`MathTable`] (`table()`) that a notebook shows as rendered mathematics, and
+//! prints as a plain-text table (`Display`, [`MathTable::plain`]):
+//!
+//! ```
+//! use splinelab::prelude::*;
+//! surface!(pub Saddle { c: f64 } = |s, t| Vector3::new(s, t, s * t * c));
+//! let f = symbolic::surface_formulas_with_parameters(&Saddle { c: 0.5 }, 0.3, 0.7)?;
+//! let table = f.to_string();
+//! assert!(table.lines().any(|l| l.starts_with("X_st") && l.trim_end().ends_with('c')));
+//! println!("{table}");
+//! # Ok::<(), splinelab::Error>(())
+//! ```
 //!
 //! **Expressions.** An [`Expr`] is `Copy`: an index into a per-thread arena of hash-consed
 //! nodes (equal subexpressions are one node) and its value at the trace point, so `re()`,
@@ -60,6 +72,12 @@
 //!   when that is shorter, the numerator multiplied out so that terms cancel and the
 //!   identities meet (`2 − 2 sinh²/cosh² = 2/cosh²`, `d²/ds dt asin(st/2)` as
 //!   `1/(2*(1 - s^2*t^2/4)^(3/2))`), and `sinᵉu/cosᵉu`, `sinhᵉu/coshᵉu` are `tanᵉu`, `tanhᵉu`;
+//! - constants that are fractions within rounding read as those fractions, and the
+//!   arithmetic of coefficients exact on them: a spline patch on data computed from fractions
+//!   prints `29/81 - s^3/81`, not `0.35802469135802467 - 0.012345679012345734*s^3`; numbers
+//!   that are only floating point (`cos(π/4)`) stay numbers (a denominator up to `2²⁰`, within
+//!   16 units in the last place; a formula so read that fails the capture check is captured
+//!   again without reading);
 //! - rounding residue cleaned where the capture check allows it: a coefficient within 32 ulps
 //!   of a fraction with denominator ≤ 64 becomes it (`3/5`, not `0.6000000000000001`), a
 //!   coefficient below 64 ε of the largest in its sum is dropped, and a formula that is only
@@ -106,6 +124,7 @@
 //! reference values, for `splinelab formulas` and `scripts/check_formulas.py` (sympy).
 
 mod canon;
+mod coef;
 pub mod corpus;
 mod display;
 // HTML/MathML escaping, also the report layer's (one function for both)
@@ -122,8 +141,8 @@ pub use display::{Math, MathTable};
 pub use expr::{Expr, Func, Node, MAX_NODES};
 pub use formulas::{
     bernstein_formulas, bspline_basis_formulas, curve_formulas, curve_formulas_local,
-    hermite_basis_formulas, patch_formulas, surface_formulas, trace, BasisFormulas, CurveFormulas,
-    PatchFormulas, SurfaceFormulas, Traced,
+    hermite_basis_formulas, patch_formulas, surface_formulas, surface_formulas_with_parameters,
+    trace, BasisFormulas, CurveFormulas, PatchFormulas, SurfaceFormulas, Traced,
 };
 pub use print::{number, Formula};
 

@@ -7,6 +7,7 @@
 use super::canon::{
     apply_bound, atan2_bound, pow_bound, Atom, Sum, Term, MAX_FORMULA_DEPTH, MAX_FORMULA_SIZE,
 };
+use super::coef::Coef;
 use super::expr::{Expr, FastMap, Func, Node, ARENA};
 use crate::error::{Error, Result};
 pub use crate::printed::number;
@@ -123,7 +124,38 @@ impl Formula {
         names: &[String],
         point: &[f64],
     ) -> Result<Vec<Formula>> {
-        let captured = ARENA.with(|a| {
+        // constants read as the fractions they are within rounding (`coef` module), unless a
+        // formula so read does not pass the capture check: then as the numbers they are
+        let read = Formula::normal_forms(roots, point, true)?;
+        let captured = if read.iter().all(|(root, w)| w.check(root, names).is_ok()) {
+            read
+        } else {
+            Formula::normal_forms(roots, point, false)?
+        };
+        captured
+            .into_iter()
+            .map(|(root, witness)| {
+                witness.check(&root, names)?;
+                // fractions over one denominator where that is shorter, if still checked
+                let combined = root.combined();
+                let root = if combined != root && witness.check(&combined, names).is_ok() {
+                    combined
+                } else {
+                    root
+                };
+                Ok(Formula {
+                    root: witness.snapped(root, names),
+                    names: names.to_vec(),
+                    witness,
+                })
+            })
+            .collect()
+    }
+
+    /// The normal forms of `roots` and their witnesses, the constants read as fractions
+    /// ([`Coef::read`]) or taken as they are.
+    fn normal_forms(roots: &[Expr], point: &[f64], read: bool) -> Result<Vec<(Sum, Witness)>> {
+        ARENA.with(|a| {
             let a = a.borrow();
             if roots
                 .iter()
@@ -152,6 +184,20 @@ impl Formula {
                 k += 1;
             }
             reach.sort_unstable();
+            // the size of the data: the largest constant the roots depend on
+            let scale = reach
+                .iter()
+                .filter_map(|&id| match a.nodes[id as usize] {
+                    Node::Num(c) if c.is_finite() => Some(c.abs()),
+                    _ => None,
+                })
+                .fold(0.0, f64::max);
+            // all or nothing: a single constant that is not a fraction keeps every one a number
+            let read = read
+                && reach.iter().all(|&id| match a.nodes[id as usize] {
+                    Node::Num(c) => Coef::readable(c, scale),
+                    _ => true,
+                });
             let mut done: FastMap<u32, Sum> = FastMap::default();
             done.reserve(reach.len());
             // each node's value at the trace point as the traced code computed it, and that
@@ -163,6 +209,7 @@ impl Formula {
                 traced.insert(id, bound);
                 let s = |k: u32| &done[&k];
                 let sum = match a.nodes[id as usize] {
+                    Node::Num(c) if read => Sum::constant(Coef::read(c, scale)),
                     Node::Num(c) => Sum::num(c),
                     Node::Var(i) => Sum::atom(Atom::Var(i)),
                     Node::Add(x, y) => Sum::add(s(x), s(y)),
@@ -194,25 +241,7 @@ impl Formula {
                     (root, witness)
                 })
                 .collect::<Vec<(Sum, Witness)>>())
-        })?;
-        captured
-            .into_iter()
-            .map(|(root, witness)| {
-                witness.check(&root, names)?;
-                // fractions over one denominator where that is shorter, if still checked
-                let combined = root.combined();
-                let root = if combined != root && witness.check(&combined, names).is_ok() {
-                    combined
-                } else {
-                    root
-                };
-                Ok(Formula {
-                    root: witness.snapped(root, names),
-                    names: names.to_vec(),
-                    witness,
-                })
-            })
-            .collect()
+        })
     }
 
     /// The number of nodes written out as a tree.
@@ -231,11 +260,11 @@ impl Formula {
         let (mut var, mut a, mut b) = (None, 0.0, 0.0);
         for t in &self.root.terms {
             match t.factors.as_slice() {
-                [] => b += t.coef,
+                [] => b += t.coef.value(),
                 [(atom, e)] if *e == 1.0 => match atom.as_ref() {
                     Atom::Var(i) if var.is_none() => {
                         var = Some(*i);
-                        a = t.coef;
+                        a = t.coef.value();
                     }
                     _ => return None,
                 },
@@ -599,8 +628,8 @@ impl Printer<'_> {
                         .cmp(&(degree(b), !b.factors.is_empty()))
                         .then_with(|| self.cmp_terms(a, b))
                 });
-                if order[0].coef < 0.0 {
-                    if let Some(k) = order.iter().position(|t| t.coef >= 0.0) {
+                if order[0].coef.value() < 0.0 {
+                    if let Some(k) = order.iter().position(|t| t.coef.value() >= 0.0) {
                         let first = order.remove(k);
                         order.insert(0, first);
                     }
@@ -608,7 +637,7 @@ impl Printer<'_> {
                 let gap = if self.style == Style::MathMl { "" } else { " " };
                 let mut out = self.term(order[0]);
                 for t in &order[1..] {
-                    let (o, t) = if t.coef < 0.0 {
+                    let (o, t) = if t.coef.value() < 0.0 {
                         ('-', negated(t))
                     } else {
                         ('+', (*t).clone())
@@ -622,25 +651,26 @@ impl Printer<'_> {
 
     /// A term: sign, numerator (coefficient first), denominator.
     fn term(&self, t: &Term) -> String {
-        let sign = if t.coef < 0.0 || (t.coef == 0.0 && t.coef.is_sign_negative()) {
+        let value = t.coef.value();
+        let sign = if value < 0.0 || (value == 0.0 && value.is_sign_negative()) {
             self.op('-')
         } else {
             String::new()
         };
-        let c = t.coef.abs();
+        let c = value.abs();
         let (mut num, mut den): (Vec<String>, Vec<String>) = (Vec::new(), Vec::new());
-        match fraction(c) {
-            _ if t.factors.is_empty() => num.push(self.num(c)),
-            Some((1, 1)) => {}
-            Some((p, q)) => {
-                if p != 1 {
+        match t.coef.fraction() {
+            Some((p, q)) if q > 64 || !t.factors.is_empty() => {
+                // an exact fraction beyond what the value's printing finds (`29/81`)
+                let p = p.unsigned_abs();
+                if p != 1 || t.factors.is_empty() {
                     num.push(self.num(p as f64));
                 }
                 if q > 1 {
-                    den.push(self.num(f64::from(q)));
+                    den.push(self.num(q as f64));
                 }
             }
-            None => num.push(self.num(c)),
+            _ => num.push(self.num(c)),
         }
         // a sum alone above or below a fraction bar needs no brackets in LaTeX and MathML
         let (mut num_bare, mut den_bare) = (None, None);
@@ -720,7 +750,7 @@ impl Printer<'_> {
         }
         fa.len()
             .cmp(&fb.len())
-            .then_with(|| a.coef.total_cmp(&b.coef))
+            .then_with(|| a.coef.value().total_cmp(&b.coef.value()))
     }
 
     /// Factors side by side: `*` in plain text; juxtaposed in LaTeX and MathML, with a dot
@@ -895,9 +925,9 @@ fn latex_func(f: Func) -> Option<&'static str> {
 fn is_atomic(s: &Sum) -> bool {
     match s.terms.as_slice() {
         [] => true,
-        [t] if t.factors.is_empty() => t.coef >= 0.0 && t.coef.fract() == 0.0,
+        [t] if t.factors.is_empty() => t.coef.value() >= 0.0 && t.coef.value().fract() == 0.0,
         [t] => {
-            t.coef == 1.0
+            t.coef.value() == 1.0
                 && t.factors.len() == 1
                 && t.factors[0].1 == 1.0
                 && !matches!(*t.factors[0].0, Atom::Pow(..) | Atom::Group(_))
@@ -934,7 +964,7 @@ fn degree(t: &Term) -> u64 {
 
 fn negated(t: &Term) -> Term {
     Term {
-        coef: -t.coef,
+        coef: t.coef.neg(),
         factors: t.factors.clone(),
     }
 }
@@ -944,11 +974,11 @@ fn negated(t: &Term) -> Term {
 /// nothing is common. Powers of variables stay in place, so a polynomial prints expanded in
 /// powers, as the report prints its bases.
 fn factor_out(terms: &[Term]) -> Option<Term> {
-    let sign = if terms.iter().all(|t| t.coef < 0.0) {
+    let sign = Coef::of(if terms.iter().all(|t| t.coef.value() < 0.0) {
         -1.0
     } else {
         1.0
-    };
+    });
     let mut common: Vec<(Rc<Atom>, f64)> = Vec::new();
     for (a, e) in &terms[0].factors {
         if a.is_var() {
@@ -968,7 +998,7 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
             common.push((a.clone(), exp));
         }
     }
-    if common.is_empty() && sign > 0.0 {
+    if common.is_empty() && sign.value() > 0.0 {
         return None;
     }
     let rest: Vec<Term> = terms
@@ -986,7 +1016,7 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
                 }
             }
             Term {
-                coef: t.coef * sign,
+                coef: t.coef.mul(sign),
                 factors,
             }
         })
@@ -1000,7 +1030,7 @@ fn factor_out(terms: &[Term]) -> Option<Term> {
         factors: common,
     };
     Some(match inner.terms.as_slice() {
-        [] => Term::constant(0.0),
+        [] => Term::constant(Coef::of(0.0)),
         [t] => outside.times(t),
         _ => {
             let mut factors = outside.factors;

@@ -358,18 +358,21 @@ fn plane_figure_cases() -> Vec<Case> {
                     h: f64::NAN,
                     errors: e(f64::INFINITY),
                     order: None,
+                    rounding: f64::NAN,
                 },
                 splinelab::study::hermite_error::ConvergenceRow {
                     n: usize::MAX,
                     h: 0.0,
                     errors: e(5e-324),
                     order: None,
+                    rounding: -1.0,
                 },
                 splinelab::study::hermite_error::ConvergenceRow {
                     n: 1,
                     h: f64::MAX,
                     errors: e(f64::MAX),
                     order: None,
+                    rounding: f64::INFINITY,
                 },
             ];
             drawable(draw::convergence(&rows, "bad rows"))
@@ -418,7 +421,7 @@ fn draw_surface_cases() -> Vec<Case> {
             for n in [0, 1] {
                 expect_err!(
                     Plot3d::new("x").surface(&f, &Rect::unit(), n),
-                    RError::Core(Error::TooFewSamples { .. })
+                    RError::Core(Error::TooFewSamples { what, .. }) if *what == "samples"
                 )?;
             }
             expect_err!(
@@ -438,7 +441,7 @@ fn draw_surface_cases() -> Vec<Case> {
             let spline = ok(HermiteSurface::uniform(&f, &Rect::unit(), 2, 2))?;
             expect_err!(
                 draw::error_map(&f, &spline, 1),
-                RError::Core(Error::TooFewSamples { .. })
+                RError::Core(Error::TooFewSamples { what, .. }) if *what == "samples"
             )?;
             let g = FnSurface::new(|s, t| Vector3::new(s, t, (s - 0.3).sqrt()));
             expect_err!(
@@ -643,7 +646,7 @@ fn scene_builder_cases() -> Vec<Case> {
             for n in [0, 1] {
                 expect_err!(
                     Plot3d::new("p").patches(&s, n, 1.0, true, |_, _| BLUE),
-                    RError::Core(Error::TooFewSamples { .. })
+                    RError::Core(Error::TooFewSamples { what, .. }) if *what == "samples"
                 )?;
             }
             draws(ok(Plot3d::new("p").spline(&s))?.figure())

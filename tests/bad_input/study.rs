@@ -33,7 +33,7 @@ fn spline_errors_cases() -> Vec<Case> {
                     1,
                     PatchEvaluation::HermiteMatrix
                 ),
-                Error::TooFewSamples { got: 1, .. }
+                Error::TooFewSamples { got: 1, what } if what.starts_with("prec")
             )
         }),
         case("study::spline_errors_prec_zero", || {
@@ -46,7 +46,7 @@ fn spline_errors_cases() -> Vec<Case> {
                     0,
                     PatchEvaluation::DeCasteljau
                 ),
-                Error::TooFewSamples { got: 0, .. }
+                Error::TooFewSamples { got: 0, what } if what.starts_with("prec")
             )
         }),
         risky("study::spline_errors_prec_huge", || {
@@ -209,7 +209,23 @@ fn uniform_and_convergence_cases() -> Vec<Case> {
         case("study::convergence_prec_one", || {
             expect_err!(
                 convergence(&Torus::default(), &Rect::unit(), &[1], 1),
-                Error::TooFewSamples { .. }
+                Error::TooFewSamples { what, .. } if what.starts_with("prec")
+            )?;
+            // the case of the report: `ns` is a good argument, `prec` the bad one
+            expect_err!(
+                convergence(&Torus::default(), &Rect::unit(), &[1, 2], 1),
+                Error::TooFewSamples { what, .. } if what.starts_with("prec")
+            )?;
+            expect_err!(
+                uniform_spline_errors(
+                    &Torus::default(),
+                    &Rect::unit(),
+                    2,
+                    2,
+                    1,
+                    PatchEvaluation::DeCasteljau
+                ),
+                Error::TooFewSamples { what, .. } if what.starts_with("prec")
             )
         }),
         case("study::convergence_empty", || {
