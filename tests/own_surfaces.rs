@@ -334,3 +334,24 @@ fn the_convergence_table_and_figure_say_so_too() -> Result<(), splinelab::report
     );
     Ok(())
 }
+
+/// The labelled edges of x and y meet at a corner of a 3-D figure's box: Enneper's surface
+/// on `[-1.5, 1.5]²` has both x and y ranges ending near ±4, and both axes printed a "4.0"
+/// there, one on top of the other. Now x's labels keep clear of its ends: one "4.0" is left.
+#[cfg(feature = "report")]
+#[test]
+fn a_3d_figure_prints_one_label_at_the_corner_x_and_y_share() -> Result<(), splinelab::report::Error>
+{
+    let r = Rect::new(-1.5, 1.5, -1.5, 1.5);
+    let svg = Plot3d::new("Enneper")
+        .surface(&Enneper, &r, 20)?
+        .figure()
+        .to_svg()?;
+    let text = svg.replace('\n', "");
+    assert_eq!(text.matches(">4.0<").count(), 1, "one 4.0 label");
+    assert!(
+        text.contains(">2.0<") && text.contains(">-2.0<"),
+        "the other labels stay"
+    );
+    Ok(())
+}

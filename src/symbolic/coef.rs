@@ -107,10 +107,18 @@ impl Coef {
     /// `a + b`, exact when both are (and the sum fits).
     pub fn add(self, other: Coef) -> Coef {
         match (self.exact, other.exact) {
+            // integers (most coefficients): no common denominator to find
+            (Some(a), Some(b)) if a.is_integer() && b.is_integer() => {
+                match i128::checked_add(*a.numer(), *b.numer()) {
+                    Some(p) => Coef::exact(Ratio::from_integer(p))
+                        .unwrap_or(Coef::float(self.value + other.value)),
+                    None => Coef::float(self.value + other.value),
+                }
+            }
             (Some(a), Some(b)) => a
                 .checked_add(&b)
                 .and_then(Coef::exact)
-                .unwrap_or(Coef::of(self.value + other.value)),
+                .unwrap_or(Coef::float(self.value + other.value)),
             _ => Coef::float(self.value + other.value),
         }
     }
@@ -118,10 +126,17 @@ impl Coef {
     /// `a · b`, exact when both are (and the product fits).
     pub fn mul(self, other: Coef) -> Coef {
         match (self.exact, other.exact) {
+            (Some(a), Some(b)) if a.is_integer() && b.is_integer() => {
+                match i128::checked_mul(*a.numer(), *b.numer()) {
+                    Some(p) => Coef::exact(Ratio::from_integer(p))
+                        .unwrap_or(Coef::float(self.value * other.value)),
+                    None => Coef::float(self.value * other.value),
+                }
+            }
             (Some(a), Some(b)) => a
                 .checked_mul(&b)
                 .and_then(Coef::exact)
-                .unwrap_or(Coef::of(self.value * other.value)),
+                .unwrap_or(Coef::float(self.value * other.value)),
             _ => Coef::float(self.value * other.value),
         }
     }
@@ -145,10 +160,12 @@ impl Coef {
         }
     }
 
-    /// A result of floating-point arithmetic: exact only where [`Coef::of`] finds it so, so
-    /// an integer stays one.
+    /// A result of floating-point arithmetic: exact only if it is an integer (below `2⁵³`),
+    /// so an integer stays one; no search for a fraction on the way.
     fn float(value: f64) -> Coef {
-        Coef::of(value)
+        let exact = (value.fract() == 0.0 && value.abs() < 9.0e15)
+            .then(|| Ratio::from_integer(value as i128));
+        Coef { value, exact }
     }
 
     /// Whether the coefficient is a fraction known exactly (not only a floating-point number).
