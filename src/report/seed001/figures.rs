@@ -361,7 +361,12 @@ pub fn cubic_spline_ends(
         PiecewiseLinear::try_new(x, &y.iter().map(|&v| Vector1::new(v)).collect::<Vec<_>>())?;
     let (a, b) = (x[0], x[x.len() - 1]);
     let mut top = Panel::new(
-        format!("{} samples of {name} on [{a:.4}, {b:.4}]", x.len()),
+        format!(
+            "{} samples of {name} on [{}, {}]",
+            x.len(),
+            crate::printed::rounded(a, 5),
+            crate::printed::rounded(b, 5)
+        ),
         "x",
         "s(x)",
     )
