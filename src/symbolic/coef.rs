@@ -106,39 +106,42 @@ impl Coef {
 
     /// `a + b`, exact when both are (and the sum fits).
     pub fn add(self, other: Coef) -> Coef {
-        match (self.exact, other.exact) {
-            // integers (most coefficients): no common denominator to find
-            (Some(a), Some(b)) if a.is_integer() && b.is_integer() => {
-                match i128::checked_add(*a.numer(), *b.numer()) {
-                    Some(p) => Coef::exact(Ratio::from_integer(p))
-                        .unwrap_or(Coef::float(self.value + other.value)),
-                    None => Coef::float(self.value + other.value),
-                }
-            }
-            (Some(a), Some(b)) => a
-                .checked_add(&b)
-                .and_then(Coef::exact)
-                .unwrap_or(Coef::float(self.value + other.value)),
-            _ => Coef::float(self.value + other.value),
-        }
+        self.combine(
+            other,
+            i128::checked_add,
+            |a, b| a.checked_add(b),
+            self.value + other.value,
+        )
     }
 
     /// `a · b`, exact when both are (and the product fits).
     pub fn mul(self, other: Coef) -> Coef {
-        match (self.exact, other.exact) {
+        self.combine(
+            other,
+            i128::checked_mul,
+            |a, b| a.checked_mul(b),
+            self.value * other.value,
+        )
+    }
+
+    /// One exact operation on two coefficients: on integers directly (most coefficients: no
+    /// common denominator to find), on fractions by `fraction`; `float` (the operation in
+    /// `f64`) when either is not exact or the result does not fit.
+    fn combine(
+        self,
+        other: Coef,
+        integer: fn(i128, i128) -> Option<i128>,
+        fraction: fn(&Ratio<i128>, &Ratio<i128>) -> Option<Ratio<i128>>,
+        float: f64,
+    ) -> Coef {
+        let exact = match (self.exact, other.exact) {
             (Some(a), Some(b)) if a.is_integer() && b.is_integer() => {
-                match i128::checked_mul(*a.numer(), *b.numer()) {
-                    Some(p) => Coef::exact(Ratio::from_integer(p))
-                        .unwrap_or(Coef::float(self.value * other.value)),
-                    None => Coef::float(self.value * other.value),
-                }
+                integer(*a.numer(), *b.numer()).map(Ratio::from_integer)
             }
-            (Some(a), Some(b)) => a
-                .checked_mul(&b)
-                .and_then(Coef::exact)
-                .unwrap_or(Coef::float(self.value * other.value)),
-            _ => Coef::float(self.value * other.value),
-        }
+            (Some(a), Some(b)) => fraction(&a, &b),
+            _ => None,
+        };
+        exact.and_then(Coef::exact).unwrap_or(Coef::float(float))
     }
 
     /// `cⁿ`, exact when `c` is (and the power fits).

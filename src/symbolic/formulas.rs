@@ -242,22 +242,16 @@ fn traced_surface<S: ParametricSurface + ?Sized>(
     let traced = trace_vars(&vars, |x| {
         let (zero, one) = (Expr::constant(0.0), Expr::constant(1.0));
         let (sv, tv) = (x[0], x[1]);
-        let x = if symbols {
-            let given: Vec<HyperDual<Expr>> = x[2..]
-                .iter()
-                .map(|&p| HyperDual::new(p, zero, zero, zero))
-                .collect();
-            surface.eval_with(
-                HyperDual::new(sv, one, zero, zero),
-                HyperDual::new(tv, zero, one, zero),
-                &given,
-            )
-        } else {
-            surface.eval(
-                HyperDual::new(sv, one, zero, zero),
-                HyperDual::new(tv, zero, one, zero),
-            )
-        };
+        // with no parameters given, `eval_with` takes the surface's own values (as numbers)
+        let given: Vec<HyperDual<Expr>> = x[2..]
+            .iter()
+            .map(|&p| HyperDual::new(p, zero, zero, zero))
+            .collect();
+        let x = surface.eval_with(
+            HyperDual::new(sv, one, zero, zero),
+            HyperDual::new(tv, zero, one, zero),
+            &given,
+        );
         let mut out = Vec::with_capacity(12);
         let parts: [fn(&HyperDual<Expr>) -> Expr; 4] =
             [|d| d.re, |d| d.eps1, |d| d.eps2, |d| d.eps1eps2];
